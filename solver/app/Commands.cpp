@@ -1,0 +1,230 @@
+#include "app/Commands.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/EmbeddedCase.h"
+#include "app/ExitCodes.h"
+#include "core/Error.h"
+#include "core/Parallel.h"
+#include "core/Version.h"
+#include "io/AtomicFile.h"
+#include "io/RunDirectory.h"
+#include "io/RunSummary.h"
+#include "io/VtpSeriesWriter.h"
+#include "scene/CaseParser.h"
+#include "scene/SceneBuilder.h"
+#include "simulation/Runner.h"
+#include "simulation/Simulation.h"
+
+namespace fs = std::filesystem;
+
+namespace wcmps {
+namespace {
+
+CaseSpec load_case(const std::string& file) {
+  if (file.empty()) return parse_case_text(kEmbeddedCaseText, std::string(kEmbeddedCasePath));
+  return parse_case_file(file);
+}
+
+std::string duration(double s) {
+  char buf[32];
+  if (s < 0) return "?";
+  if (s < 60) {
+    std::snprintf(buf, sizeof buf, "%.1f s", s);
+  } else if (s < 3600) {
+    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
+                  static_cast<int>(s) % 60);
+  } else {
+    std::snprintf(buf, sizeof buf, "%d h %02d min", static_cast<int>(s) / 3600,
+                  static_cast<int>(s) % 3600 / 60);
+  }
+  return buf;
+}
+
+std::string progress_line(const Progress& p) {
+  char buf[256];
+  std::snprintf(
+      buf, sizeof buf, "t %.4f/%.4f s | step %lld | dt %.3g s | %lld particles | wall %s | left %s",
+      p.time, p.end_time, static_cast<long long>(p.step), p.dt, static_cast<long long>(p.particles),
+      duration(p.wall_seconds).c_str(), duration(p.eta_seconds).c_str());
+  return buf;
+}
+
+/// Writes frames through the series writer and notes each in the log.
+class LoggedSink : public FrameSink {
+ public:
+  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log) : writer_(writer), log_(log) {}
+  void write_frame(const Simulation& sim) override {
+    const std::size_t before = writer_.entries().size();
+    writer_.write_frame(sim);
+    if (writer_.entries().size() == before) return;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "frame %-5zu t = %-10.6g step %-8lld dt %.4g s  %s", before,
+                  sim.time(), static_cast<long long>(sim.steps()), sim.last_dt(),
+                  writer_.entries().back().file.c_str());
+    log_ << buf << std::endl;
+  }
+
+ private:
+  VtpSeriesWriter& writer_;
+  std::ofstream& log_;
+};
+
+void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
+  const ParticleSet& ps = scene.particles;
+  const Vec2 lo = scene.domain_lo, hi = scene.domain_hi;
+  TimeStepRule rule;
+  rule.mode = spec.step_mode;
+  rule.fixed = spec.fixed_step;
+  rule.courant = spec.courant;
+  rule.viscous_number = spec.viscous_number;
+  rule.dl = spec.dl;
+  rule.c0 = scene.sound_speed;
+  rule.nu = spec.kinematic_viscosity;
+  const double dt = rule.step(0.0);
+  const double g = norm(spec.gravity);
+  // Compression at the bottom of a still column of the fluid's height: n/n0 - 1 from the
+  // Tait equation at p = rho g H.
+  const double compression = std::pow(1.0 + spec.eos_exponent * g * scene.fluid_height /
+                                                (scene.sound_speed * scene.sound_speed),
+                                      1.0 / spec.eos_exponent) -
+                             1.0;
+  const auto times = output_times(spec, spec.end_time);
+  char buf[256];
+  auto line = [&](const char* fmt, auto... args) {
+    std::snprintf(buf, sizeof buf, fmt, args...);
+    out << buf << '\n';
+  };
+  line("case                %s%s%s", spec.name.c_str(), spec.description.empty() ? "" : ": ",
+       spec.description.c_str());
+  line("particles           %lld: fluid %lld, wall %lld, ghost %lld (%d ghost rows)",
+       static_cast<long long>(ps.size()), static_cast<long long>(ps.fluid_count()),
+       static_cast<long long>(ps.wall_count()), static_cast<long long>(ps.ghost_count()),
+       scene.ghost_layers);
+  if (scene.trimmed_fluid > 0) {
+    line("                    %lld lattice points dropped within %g DL of a wall",
+         static_cast<long long>(scene.trimmed_fluid), spec.wall_clearance);
+  }
+  line("spacing DL          %g m, re = %g DL = %g m", spec.dl, spec.re_over_dl, spec.re());
+  line("n0, lambda          %.6f, %.6f DL^2 (%d lattice neighbours)", scene.lattice.n0,
+       scene.lattice.lambda / (spec.dl * spec.dl), scene.lattice.neighbours);
+  line("c0                  %g m/s (%s)", scene.sound_speed,
+       spec.sound_speed ? "given" : "sound_speed_factor x sqrt(2 g H)");
+  line("fluid height H      %g m; still-water compression at its bottom %.3f %%",
+       scene.fluid_height, 100.0 * compression);
+  if (spec.step_mode == TimeStepMode::Fixed) {
+    line("time step           fixed %g s (acoustic Courant number %.3f)", dt,
+         rule.acoustic_courant(dt));
+  } else {
+    line("time step           Courant %g: dt <= %g s at rest", spec.courant, dt);
+  }
+  line("end time            %g s (about %.0f steps at most)", spec.end_time,
+       std::ceil(spec.end_time / dt));
+  std::string fields, kinds;
+  for (auto f : spec.output_fields) {
+    for (const auto& fi : kFields) {
+      if (fi.id == f) fields += (fields.empty() ? "" : ", ") + std::string(fi.name);
+    }
+  }
+  for (auto k : spec.output_kinds) kinds += (kinds.empty() ? "" : ", ") + std::string(kind_name(k));
+  line("outputs             %zu frames (%g ... %g s); fields: %s; particles: %s", times.size(),
+       times.front(), times.back(), fields.c_str(), kinds.c_str());
+  line("pressure gradient   %s",
+       std::string(pressure_gradient_key(spec.pressure_gradient)).c_str());
+  line("domain              (%g, %g) ... (%g, %g) m", lo.x, lo.y, hi.x, hi.y);
+}
+
+}  // namespace
+
+int check_command(const std::string& case_file) {
+  try {
+    const CaseSpec spec = load_case(case_file);
+    const Scene scene = build_scene(spec);
+    print_scene(std::cout, spec, scene);
+    std::cout << "ok: " << (case_file.empty() ? std::string(kEmbeddedCasePath) : case_file)
+              << " is a valid case\n";
+    return exit_code::kOk;
+  } catch (const CaseError& e) {
+    std::cerr << "wcmps: error: " << e.what() << '\n';
+    return exit_code::kBadCase;
+  }
+}
+
+int run_command(const RunOptions& o) {
+  CaseSpec spec;
+  std::optional<Scene> scene;
+  try {
+    spec = load_case(o.case_file);
+    if (o.end_time) {
+      if (!(*o.end_time > 0.0) || !std::isfinite(*o.end_time)) {
+        std::cerr << "wcmps: error: --end-time must be a positive number of seconds\n";
+        return exit_code::kUsage;
+      }
+      spec.end_time = *o.end_time;
+    }
+    scene = build_scene(spec);
+  } catch (const CaseError& e) {
+    std::cerr << "wcmps: error: " << e.what() << '\n';
+    return exit_code::kBadCase;
+  }
+  if (o.threads) set_thread_count(*o.threads);
+
+  const fs::path dir = o.output_dir.empty() ? fs::path("runs") / spec.name : fs::path(o.output_dir);
+  const bool tty = ::isatty(STDERR_FILENO) == 1;
+  std::ofstream log;
+  std::optional<Simulation> sim;
+  try {
+    prepare_run_directory(dir, o.overwrite);
+    write_file_atomically(dir / RunFiles::kCase, spec.source_text);
+    log.open(dir / RunFiles::kLog);
+    if (!log) throw IoError("cannot write " + (dir / RunFiles::kLog).string());
+    log << "wcmps " << kVersion << " run of " << spec.file.file << '\n';
+    print_scene(log, spec, *scene);
+    log << "threads             " << thread_count() << '\n' << std::flush;
+    sim.emplace(spec, std::move(*scene));
+    VtpSeriesWriter writer(dir, spec);
+    LoggedSink sink(writer, log);
+    Runner runner(*sim, output_times(spec, spec.end_time), spec.end_time);
+    std::size_t shown = 0;
+    auto progress = [&](const Progress& p) {
+      if (!tty) return;
+      const std::string s = progress_line(p);
+      std::fprintf(stderr, "\r%s%*s", s.c_str(),
+                   static_cast<int>(shown > s.size() ? shown - s.size() : 0), "");
+      shown = s.size();
+    };
+    std::optional<InstabilityReport> unstable;
+    RunStats stats;
+    try {
+      stats = runner.run(sink, progress);
+    } catch (const InstabilityError& e) {
+      unstable = e.report();
+      stats = runner.stats();
+    }
+    if (tty && shown > 0) std::fputc('\n', stderr);
+    const RunSummary summary = summarize(spec, *sim, stats, unstable);
+    write_file_atomically(dir / RunFiles::kSummary, summary.to_json().dump(2) + "\n");
+    log << summary.to_text() << std::flush;
+    if (unstable) {
+      std::cerr << "wcmps: error: unstable run: " << unstable->str() << "\n"
+                << "wcmps: the last good state (t = " << sim->time() << " s) is the last frame of "
+                << (dir / RunFiles::kSeries).string() << '\n';
+      return exit_code::kUnstable;
+    }
+    std::cout << summary.to_text() << "series: " << (dir / RunFiles::kSeries).string() << '\n';
+    return exit_code::kOk;
+  } catch (const IoError& e) {
+    if (tty) std::fputc('\n', stderr);
+    std::cerr << "wcmps: error: " << e.what() << '\n';
+    if (log) log << "error: " << e.what() << '\n';
+    return exit_code::kIo;
+  }
+}
+
+}  // namespace wcmps

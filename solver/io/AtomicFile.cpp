@@ -1,0 +1,54 @@
+#include "io/AtomicFile.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/Error.h"
+
+namespace wcmps {
+
+std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
+  auto tmp = path;
+  tmp += ".tmp-" + std::to_string(::getpid());
+  return tmp;
+}
+
+void replace_file(const std::filesystem::path& tmp, const std::filesystem::path& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw IoError("cannot write " + path.string() + ": " + ec.message());
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  const auto tmp = temporary_path_for(path);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw IoError("cannot write " + path.string() + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t w = ::write(fd, content.data() + done, content.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) {
+      const int err = errno;
+      ::close(fd);
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw IoError("cannot write " + path.string() + ": " + std::strerror(err));
+    }
+    done += static_cast<std::size_t>(w);
+  }
+  if (::close(fd) != 0) {
+    const int err = errno;
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw IoError("cannot write " + path.string() + ": " + std::strerror(err));
+  }
+  replace_file(tmp, path);
+}
+
+}  // namespace wcmps

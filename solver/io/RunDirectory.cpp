@@ -1,0 +1,54 @@
+#include "io/RunDirectory.h"
+
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+
+namespace fs = std::filesystem;
+
+namespace wcmps {
+
+bool is_run_file(const fs::path& name) {
+  const std::string s = name.filename().string();
+  auto starts = [&](const std::string& p) { return s.rfind(p, 0) == 0; };
+  if (s.find(".tmp-") != std::string::npos) return true;
+  return s == RunFiles::kSeries || s == RunFiles::kSummary || s == RunFiles::kLog ||
+         s == RunFiles::kCase || (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
+}
+
+void prepare_run_directory(const fs::path& dir, bool overwrite) {
+  std::error_code ec;
+  if (fs::exists(dir, ec)) {
+    if (!fs::is_directory(dir, ec)) {
+      throw IoError("output directory " + dir.string() + " exists and is not a directory");
+    }
+    std::vector<fs::path> run_files;
+    for (const auto& e : fs::directory_iterator(dir, ec)) {
+      if (!is_run_file(e.path())) {
+        throw IoError("output directory " + dir.string() + " holds '" +
+                      e.path().filename().string() +
+                      "', which a run does not write; choose an empty or new directory");
+      }
+      run_files.push_back(e.path());
+    }
+    if (ec) throw IoError("cannot read output directory " + dir.string() + ": " + ec.message());
+    if (!run_files.empty() && !overwrite) {
+      throw IoError("output directory " + dir.string() +
+                    " holds an earlier run; pass --overwrite to replace it");
+    }
+    for (const auto& f : run_files) {
+      fs::remove(f, ec);
+      if (ec) throw IoError("cannot remove " + f.string() + ": " + ec.message());
+    }
+  } else {
+    fs::create_directories(dir, ec);
+    if (ec) throw IoError("cannot create output directory " + dir.string() + ": " + ec.message());
+  }
+  // Writable? (Permissions alone do not tell: read-only mounts, full disks.)
+  write_file_atomically(dir / ".write-test", "");
+  fs::remove(dir / ".write-test", ec);
+}
+
+}  // namespace wcmps

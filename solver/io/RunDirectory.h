@@ -1,0 +1,27 @@
+#pragma once
+/// @file RunDirectory.h
+/// @brief What a run directory holds, and how a new run takes one over.
+
+#include <filesystem>
+
+namespace wcmps {
+
+/// Names of the files of a run directory.
+struct RunFiles {
+  static constexpr const char* kSeries = "series.pvd";
+  static constexpr const char* kSummary = "run.json";
+  static constexpr const char* kLog = "run.log";
+  static constexpr const char* kCase = "case.toml";
+  static constexpr const char* kFramePrefix = "frame_";
+};
+
+/// Makes `dir` ready for a new run. A missing directory is created; an empty one is used. One
+/// that holds an earlier run is replaced only if `overwrite` is set (its run files are removed,
+/// nothing else). A directory holding anything that is not a run file is refused. Throws
+/// IoError naming the directory and the reason; checks that it is writable.
+void prepare_run_directory(const std::filesystem::path& dir, bool overwrite);
+
+/// True for the names a run writes (series, summary, log, case copy, frames, temporaries).
+bool is_run_file(const std::filesystem::path& name);
+
+}  // namespace wcmps

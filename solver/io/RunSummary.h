@@ -1,0 +1,47 @@
+#pragma once
+/// @file RunSummary.h
+/// @brief The figures of a finished (or stopped) run, as run.json and as the closing lines of
+/// run.log; both come from the same RunSummary so they cannot disagree.
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/Error.h"
+#include "scene/CaseSpec.h"
+#include "simulation/Runner.h"
+#include "simulation/Simulation.h"
+
+namespace wcmps {
+
+struct RunSummary {
+  std::string version;
+  std::string case_name, case_file;
+  std::string status;  ///< "completed" or "unstable"
+  std::optional<InstabilityReport> instability;
+  std::int64_t fluid = 0, wall = 0, ghost = 0;
+  double dl = 0.0, re = 0.0, n0 = 0.0, lambda = 0.0, c0 = 0.0;
+  std::string time_step;  ///< "fixed" or "courant"
+  double end_time = 0.0;
+  RunStats stats;
+  int threads = 1;
+  std::int64_t pairs_visited = 0;
+  std::vector<std::pair<std::string, double>> phase_seconds;
+
+  std::int64_t particles() const { return fluid + wall + ghost; }
+  /// All particles times steps, per wall second of stepping (frame output excluded).
+  double particle_steps_per_second() const;
+  double fluid_particle_steps_per_second() const;
+  double pairs_per_second() const;
+  double stepping_seconds() const { return stats.wall_seconds - stats.output_seconds; }
+
+  nlohmann::json to_json() const;
+  std::string to_text() const;
+};
+
+/// Collects the summary of a run of `sim` for `spec`.
+RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats& stats,
+                     const std::optional<InstabilityReport>& instability);
+
+}  // namespace wcmps

@@ -1,0 +1,47 @@
+#pragma once
+/// @file VtpSeriesWriter.h
+/// @brief Writes frames as VTK XML PolyData (.vtp: binary, LZ4-compressed) and keeps
+/// series.pvd listing every frame with its time, rewritten atomically after each frame, so a
+/// series on disk is always complete and opens in ParaView with the right times.
+///
+/// Each frame carries the fields the case asks for (particles/Fields.h) for the particle kinds
+/// it asks for, one vertex cell per particle, and field data that lets filters and scripts work
+/// without the case file: TimeValue, Step, DL, re, n0, lambda, c0, rho0, CaseName.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/CaseSpec.h"
+#include "simulation/Runner.h"
+
+namespace wcmps {
+
+class VtpSeriesWriter : public FrameSink {
+ public:
+  VtpSeriesWriter(std::filesystem::path dir, const CaseSpec& spec);
+
+  /// Writes the simulation's current state as the next frame (once per step: a second call at
+  /// the same step is ignored).
+  void write_frame(const Simulation& sim) override;
+
+  struct Entry {
+    double time;
+    std::int64_t step;
+    std::string file;
+  };
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  void write_series() const;
+
+  std::filesystem::path dir_;
+  std::string case_name_;
+  std::vector<FieldId> fields_;
+  std::vector<ParticleKind> kinds_;
+  bool double_precision_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace wcmps

@@ -1,0 +1,93 @@
+#pragma once
+/// @file PressureGradient.h
+/// @brief Pressure-gradient schemes of the correction step (thesis Eq. 2.15). A case file picks
+/// one by name from kPressureGradientSchemes; the phase is instantiated once per scheme through
+/// with_pressure_gradient(), so the per-particle loop has no branch or virtual call.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "core/Vec2.h"
+#include "operators/MpsOperators.h"
+
+namespace wcmps {
+
+/// Koshizuka, Nobe & Oka (1998), thesis Eq. 2.19: the MPS gradient with p_i replaced by the
+/// minimum pressure of the neighbourhood. Always repulsive; the study's choice.
+struct PressureGradient_Koshizuka1998Min {
+  static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
+                       const double* y, const double* p, const double* /*n*/,
+                       std::int64_t /*fluid_begin*/) {
+    return ops.gradient_neighbourhood_min(i, nb, x, y, p);
+  }
+};
+
+/// Koshizuka & Oka (1996), thesis Eq. 2.18: the plain MPS gradient with p_i. The study notes
+/// it is unstable (pairs attract where p_j < p_i); offered for comparison.
+struct PressureGradient_Koshizuka1996 {
+  static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
+                       const double* y, const double* p, const double* /*n*/,
+                       std::int64_t /*fluid_begin*/) {
+    return ops.gradient(i, nb, x, y, p);
+  }
+};
+
+/// The variational pressure gradient of the summed number density (Suzuki, Koshizuka & Oka
+/// 2007, Comput. Methods Appl. Mech. Engrg. 196, 2876-2894; MpsOperators::gradient_variational):
+/// the pressure force is minus the derivative of the fluid's potential energy, so a particle
+/// system at rest cannot gain energy from it, and pair forces cancel.
+struct PressureGradient_Suzuki2007 {
+  static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
+                       const double* y, const double* p, const double* n,
+                       std::int64_t fluid_begin) {
+    return ops.gradient_variational(i, nb, x, y, p, n, fluid_begin);
+  }
+};
+
+enum class PressureGradientScheme { Koshizuka1998Min, Koshizuka1996, Suzuki2007 };
+
+struct SchemeEntry {
+  std::string_view key;  ///< name in the case file
+  PressureGradientScheme scheme;
+  std::string_view reference;
+};
+
+inline constexpr SchemeEntry kPressureGradientSchemes[] = {
+    {"koshizuka1998-min", PressureGradientScheme::Koshizuka1998Min,
+     "Koshizuka, Nobe & Oka (1998), Int. J. Numer. Meth. Fluids 26, 751-769; thesis Eq. 2.19"},
+    {"koshizuka1996", PressureGradientScheme::Koshizuka1996,
+     "Koshizuka & Oka (1996), Nucl. Sci. Eng. 123, 421-434; thesis Eq. 2.18"},
+    {"suzuki2007-variational", PressureGradientScheme::Suzuki2007,
+     "Suzuki, Koshizuka & Oka (2007), Comput. Methods Appl. Mech. Engrg. 196, 2876-2894"},
+};
+
+inline std::optional<PressureGradientScheme> pressure_gradient_from_key(std::string_view key) {
+  for (const auto& e : kPressureGradientSchemes) {
+    if (e.key == key) return e.scheme;
+  }
+  return std::nullopt;
+}
+
+inline std::string_view pressure_gradient_key(PressureGradientScheme s) {
+  for (const auto& e : kPressureGradientSchemes) {
+    if (e.scheme == s) return e.key;
+  }
+  return "?";
+}
+
+/// Calls f(Scheme{}) with the scheme type that `s` names.
+template <class F>
+decltype(auto) with_pressure_gradient(PressureGradientScheme s, F&& f) {
+  switch (s) {
+    case PressureGradientScheme::Koshizuka1996:
+      return f(PressureGradient_Koshizuka1996{});
+    case PressureGradientScheme::Suzuki2007:
+      return f(PressureGradient_Suzuki2007{});
+    case PressureGradientScheme::Koshizuka1998Min:
+      break;
+  }
+  return f(PressureGradient_Koshizuka1998Min{});
+}
+
+}  // namespace wcmps

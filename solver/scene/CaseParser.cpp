@@ -1,0 +1,459 @@
+#include "scene/CaseParser.h"
+
+#include <toml++/toml.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace wcmps {
+namespace {
+
+std::string type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    default:
+      return "a date or time";
+  }
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+/// Reads one table of the case file. Every key it is asked about counts as known; finish()
+/// rejects the others.
+class TableReader {
+ public:
+  TableReader(const toml::table& t, std::string label, const std::string& file)
+      : t_(t), label_(std::move(label)), file_(file) {}
+
+  SourceLocation where(const toml::node& n) const {
+    return {file_, n.source().begin.line, n.source().begin.column};
+  }
+  SourceLocation where() const { return where(t_); }
+  [[noreturn]] void fail(const toml::node& n, const std::string& key,
+                         const std::string& msg) const {
+    throw CaseError(where(n), label_ + " " + key + ": " + msg);
+  }
+
+  const toml::node* get(const std::string& key) {
+    known_.push_back(key);
+    return t_.get(key);
+  }
+
+  double number(const std::string& key, std::optional<double> fallback, double lo, double hi,
+                bool lo_open = false, bool hi_open = false) {
+    const toml::node* n = get(key);
+    if (!n) {
+      if (!fallback) throw CaseError(where(), label_ + " " + key + " is required");
+      return *fallback;
+    }
+    return number_value(*n, key, lo, hi, lo_open, hi_open);
+  }
+
+  std::optional<double> optional_number(const std::string& key, double lo, double hi,
+                                        bool lo_open = false) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    return number_value(*n, key, lo, hi, lo_open, false);
+  }
+
+  double number_value(const toml::node& n, const std::string& key, double lo, double hi,
+                      bool lo_open, bool hi_open) const {
+    if (!n.is_number()) fail(n, key, "expected a number, got " + type_name(n));
+    const double v = n.value<double>().value_or(NAN);
+    if (!std::isfinite(v)) fail(n, key, "must be finite");
+    const bool below = lo_open ? !(v > lo) : !(v >= lo);
+    const bool above = hi_open ? !(v < hi) : !(v <= hi);
+    if (below || above) {
+      std::string range = std::string(lo_open ? "(" : "[") + fmt(lo) + ", " +
+                          (std::isinf(hi) ? std::string("inf") : fmt(hi)) +
+                          (hi_open || std::isinf(hi) ? ")" : "]");
+      fail(n, key, "value " + fmt(v) + " is out of range " + range);
+    }
+    return v;
+  }
+
+  std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t lo,
+                       std::int64_t hi) {
+    const toml::node* n = get(key);
+    if (!n) return fallback;
+    if (!n->is_integer()) fail(*n, key, "expected an integer, got " + type_name(*n));
+    const std::int64_t v = n->value<std::int64_t>().value_or(0);
+    if (v < lo || v > hi) {
+      fail(*n, key,
+           "value " + std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " +
+               std::to_string(hi) + "]");
+    }
+    return v;
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    const toml::node* n = get(key);
+    if (!n) return fallback;
+    if (!n->is_boolean()) fail(*n, key, "expected true or false, got " + type_name(*n));
+    return n->value<bool>().value_or(fallback);
+  }
+
+  std::string string(const std::string& key, const std::string& fallback) {
+    const toml::node* n = get(key);
+    if (!n) return fallback;
+    if (!n->is_string()) fail(*n, key, "expected a string, got " + type_name(*n));
+    return n->value<std::string>().value_or(fallback);
+  }
+
+  /// A string that must be one of `choices`.
+  std::string choice(const std::string& key, const std::string& fallback,
+                     const std::vector<std::string>& choices) {
+    const std::string v = string(key, fallback);
+    for (const auto& c : choices) {
+      if (v == c) return v;
+    }
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
+    fail(*t_.get(key), key, "\"" + v + "\" is not one of " + list);
+  }
+
+  Vec2 point_value(const toml::node& n, const std::string& key) const {
+    const toml::array* a = n.as_array();
+    if (!a || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number()) {
+      fail(n, key, "expected a point [x, y] of two numbers");
+    }
+    const Vec2 p{(*a)[0].value<double>().value_or(NAN), (*a)[1].value<double>().value_or(NAN)};
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail(n, key, "coordinates must be finite");
+    return p;
+  }
+
+  std::optional<Vec2> point(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    return point_value(*n, key);
+  }
+
+  std::vector<Vec2> points(const toml::node& n, const std::string& key, std::size_t min_count) {
+    const toml::array* a = n.as_array();
+    if (!a) fail(n, key, "expected an array of points [[x, y], ...], got " + type_name(n));
+    std::vector<Vec2> out;
+    for (const auto& e : *a) out.push_back(point_value(e, key));
+    if (out.size() < min_count) {
+      fail(n, key, "needs at least " + std::to_string(min_count) + " points");
+    }
+    return out;
+  }
+
+  const toml::array* array(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return nullptr;
+    if (!n->is_array()) fail(*n, key, "expected an array, got " + type_name(*n));
+    return n->as_array();
+  }
+
+  /// Rejects keys nobody asked about.
+  void finish() const {
+    for (auto&& [k, v] : t_) {
+      bool ok = false;
+      for (const auto& kk : known_) ok = ok || kk == k.str();
+      if (!ok) {
+        std::string list;
+        for (const auto& kk : known_) list += (list.empty() ? "" : ", ") + kk;
+        throw CaseError({file_, k.source().begin.line, k.source().begin.column},
+                        "unknown key '" + std::string(k.str()) + "' in " + label_ +
+                            " (known keys: " + list + ")");
+      }
+    }
+  }
+
+  const toml::table& table() const { return t_; }
+  const std::string& label() const { return label_; }
+
+ private:
+  const toml::table& t_;
+  std::string label_;
+  const std::string& file_;
+  std::vector<std::string> known_;
+};
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A sub-table [name] of the root (an empty one if absent).
+const toml::table& section(TableReader& root, const std::string& name, const toml::table& empty) {
+  const toml::node* n = root.get(name);
+  if (!n) return empty;
+  if (!n->is_table()) root.fail(*n, name, "expected a table [" + name + "]");
+  return *n->as_table();
+}
+
+std::vector<Vec2> rectangle_corners(TableReader& r, const toml::node& n, const std::string& key) {
+  const toml::table* t = n.as_table();
+  if (!t) r.fail(n, key, "expected { min = [x, y], max = [x, y] }");
+  TableReader rect(*t, r.label() + " " + key, r.where(n).file);
+  const auto lo = rect.point("min");
+  const auto hi = rect.point("max");
+  if (!lo || !hi) r.fail(n, key, "needs both min and max");
+  rect.finish();
+  if (!(hi->x > lo->x) || !(hi->y > lo->y)) {
+    r.fail(n, key, "max must be greater than min in x and in y");
+  }
+  return {*lo, {hi->x, lo->y}, *hi, {lo->x, hi->y}};
+}
+
+double signed_area(const std::vector<Vec2>& p) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+  return 0.5 * a;
+}
+
+FluidRegionSpec read_fluid(TableReader& r) {
+  FluidRegionSpec f;
+  f.where = r.where();
+  const toml::node* rect = r.get("rectangle");
+  const toml::node* poly = r.get("polygon");
+  if ((rect != nullptr) == (poly != nullptr)) {
+    throw CaseError(r.where(), r.label() + ": give exactly one shape, rectangle or polygon");
+  }
+  if (rect) {
+    f.polygon = rectangle_corners(r, *rect, "rectangle");
+  } else {
+    f.polygon = r.points(*poly, "polygon", 3);
+    if (std::abs(signed_area(f.polygon)) <= 0.0) r.fail(*poly, "polygon", "has zero area");
+  }
+  f.velocity = r.point("velocity").value_or(Vec2{});
+  r.finish();
+  return f;
+}
+
+WallSpec read_wall(TableReader& r) {
+  WallSpec w;
+  w.where = r.where();
+  const toml::node* line = r.get("polyline");
+  const toml::node* rect = r.get("rectangle");
+  const toml::node* poly = r.get("polygon");
+  const int shapes = (line != nullptr) + (rect != nullptr) + (poly != nullptr);
+  if (shapes != 1) {
+    throw CaseError(r.where(),
+                    r.label() + ": give exactly one shape, polyline, rectangle or polygon");
+  }
+  const bool closed = r.boolean("closed", false);
+  const toml::node* solid_node = r.get("solid");
+  if (line) {
+    w.points = r.points(*line, "polyline", 2);
+    w.closed = closed;
+    if (!solid_node) {
+      throw CaseError(r.where(), r.label() +
+                                     ": a polyline wall needs solid = \"left\" or \"right\" "
+                                     "(the side of the solid, looking along the line)");
+    }
+    const std::string side = r.choice("solid", "right", {"left", "right"});
+    w.solid_on_right = side == "right";
+  } else {
+    if (solid_node) {
+      r.fail(*solid_node, "solid",
+             "only a polyline takes solid; rectangles and polygons are solid inside");
+    }
+    w.points = rect ? rectangle_corners(r, *rect, "rectangle") : r.points(*poly, "polygon", 3);
+    w.closed = true;
+    const double a = signed_area(w.points);
+    if (a == 0.0) r.fail(poly ? *poly : *rect, poly ? "polygon" : "rectangle", "has zero area");
+    // Solid inside: on the right of a clockwise outline, on the left of a counter-clockwise one.
+    w.solid_on_right = a < 0.0;
+  }
+  for (std::size_t i = 0; i + 1 < w.points.size() + (w.closed ? 1 : 0); ++i) {
+    const Vec2 a = w.points[i], b = w.points[(i + 1) % w.points.size()];
+    if (norm(b - a) == 0.0) {
+      throw CaseError(r.where(),
+                      r.label() + ": segment " + std::to_string(i + 1) + " has zero length");
+    }
+  }
+  r.finish();
+  return w;
+}
+
+}  // namespace
+
+CaseSpec parse_case_text(std::string_view text, const std::string& path) {
+  CaseSpec c;
+  c.file = {path, 0, 0};
+  c.source_text = std::string(text);
+  toml::table root_table;
+  try {
+    root_table = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw CaseError({path, e.source().begin.line, e.source().begin.column},
+                    "syntax error: " + std::string(e.description()));
+  }
+  const toml::table empty;
+  TableReader root(root_table, "case file", path);
+
+  {
+    TableReader r(section(root, "case", empty), "[case]", path);
+    c.name = r.string("name", std::filesystem::path(path).stem().string());
+    c.description = r.string("description", "");
+    r.finish();
+    if (c.name.empty()) throw CaseError(r.where(), "[case] name must not be empty");
+  }
+  {
+    TableReader r(section(root, "particles", empty), "[particles]", path);
+    c.dl = r.number("spacing", std::nullopt, 0.0, kInf, true);
+    c.re_over_dl = r.number("kernel_radius", 3.5, 1.0, 8.0, true);
+    c.lattice_origin = r.point("lattice_origin").value_or(Vec2{});
+    c.wall_clearance = r.number("wall_clearance", 0.5, 0.0, 1.0);
+    c.hydrostatic_start =
+        r.choice("initial_state", "hydrostatic", {"hydrostatic", "lattice"}) == "hydrostatic";
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "physics", empty), "[physics]", path);
+    c.density = r.number("density", 1000.0, 0.0, kInf, true);
+    c.kinematic_viscosity = r.number("kinematic_viscosity", 1.0e-6, 0.0, kInf);
+    c.gravity = r.point("gravity").value_or(Vec2{0.0, -9.81});
+    c.sound_speed = r.optional_number("sound_speed", 0.0, kInf, true);
+    c.sound_speed_factor = r.number("sound_speed_factor", 10.0, 0.0, kInf, true);
+    c.eos_exponent = r.number("eos_exponent", 7.0, 1.0, 20.0);
+    c.artificial_viscosity = r.number("artificial_viscosity", 0.02, 0.0, 1.0);
+    c.surface_threshold = r.number("surface_threshold", 0.97, 0.0, 1.0, true, true);
+    std::vector<std::string> gradients;
+    for (const auto& e : kPressureGradientSchemes) gradients.emplace_back(e.key);
+    c.pressure_gradient = *pressure_gradient_from_key(
+        r.choice("pressure_gradient", "suzuki2007-variational", gradients));
+    std::vector<std::string> walls;
+    for (const auto& e : kWallPressureSchemes) walls.emplace_back(e.key);
+    c.wall_pressure = *wall_pressure_from_key(r.choice("wall_pressure", walls.front(), walls));
+    c.negative_pressure = r.choice("negative_pressure", "zero", {"zero", "keep"}) == "zero"
+                              ? NegativePressure::Zero
+                              : NegativePressure::Keep;
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "time", empty), "[time]", path);
+    c.end_time = r.number("end", std::nullopt, 0.0, kInf, true);
+    c.step_mode = r.choice("step", "courant", {"courant", "fixed"}) == "fixed"
+                      ? TimeStepMode::Fixed
+                      : TimeStepMode::Courant;
+    c.fixed_step = r.number("fixed_step", 2.5e-5, 0.0, kInf, true);
+    c.courant = r.number("courant", 0.4, 0.0, 1.0, true);
+    c.viscous_number = r.number("viscous_number", 0.125, 0.0, 0.5, true);
+    if (c.step_mode == TimeStepMode::Fixed && c.fixed_step > c.end_time) {
+      r.fail(*r.table().get("fixed_step"), "fixed_step", "is longer than the end time");
+    }
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "output", empty), "[output]", path);
+    c.output_interval = r.number("interval", 0.0, 0.0, kInf);
+    if (const toml::array* a = r.array("times")) {
+      for (const auto& e : *a) {
+        const double t = r.number_value(e, "times", 0.0, c.end_time, false, false);
+        if (!c.output_times.empty() && t <= c.output_times.back()) {
+          r.fail(e, "times",
+                 "must be increasing (" + fmt(t) + " after " + fmt(c.output_times.back()) + ")");
+        }
+        c.output_times.push_back(t);
+      }
+    }
+    c.output_initial = r.boolean("initial", true);
+    if (const toml::array* a = r.array("fields")) {
+      for (const auto& e : *a) {
+        const auto name = e.value<std::string>();
+        const auto f = name ? find_field(*name) : std::nullopt;
+        if (!f) {
+          std::string list;
+          for (const auto& k : kFields) list += (list.empty() ? "" : ", ") + std::string(k.name);
+          r.fail(e, "fields",
+                 "unknown field " + (name ? "\"" + *name + "\"" : type_name(e)) +
+                     " (fields: " + list + ")");
+        }
+        c.output_fields.push_back(f->id);
+      }
+    } else {
+      for (const auto& f : kFields) c.output_fields.push_back(f.id);
+    }
+    if (const toml::array* a = r.array("particles")) {
+      for (const auto& e : *a) {
+        const auto name = e.value<std::string>();
+        const auto k = name ? kind_from_name(*name) : std::nullopt;
+        if (!k) r.fail(e, "particles", "expected \"fluid\", \"wall\" or \"ghost\"");
+        c.output_kinds.push_back(*k);
+      }
+    } else {
+      c.output_kinds = {ParticleKind::Fluid, ParticleKind::Wall, ParticleKind::Ghost};
+    }
+    c.output_double_precision =
+        r.choice("precision", "float32", {"float32", "float64"}) == "float64";
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "neighbours", empty), "[neighbours]", path);
+    c.neighbour_skin = r.number("skin", 0.2, 0.0, 2.0, true);
+    c.sort_interval = static_cast<int>(r.integer("sort_interval", 50, 0, 1000000));
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "stability", empty), "[stability]", path);
+    c.max_density_ratio = r.number("max_density_ratio", 1.2, 1.0, kInf, true);
+    const auto lo = r.point("domain_min");
+    const auto hi = r.point("domain_max");
+    if (lo.has_value() != hi.has_value()) {
+      throw CaseError(r.where(), "[stability] give both domain_min and domain_max, or neither");
+    }
+    if (lo) {
+      if (!(hi->x > lo->x && hi->y > lo->y)) {
+        r.fail(*r.table().get("domain_max"), "domain_max", "must exceed domain_min in x and y");
+      }
+      c.domain = std::make_pair(*lo, *hi);
+    }
+    r.finish();
+  }
+  auto tables = [&](const std::string& key, auto&& read) {
+    const toml::node* n = root.get(key);
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables()) {
+      root.fail(*n, key, "expected tables [[" + key + "]]");
+    }
+    int k = 0;
+    for (const auto& e : *a) {
+      TableReader r(*e.as_table(), "[[" + key + "]] #" + std::to_string(++k), path);
+      read(r);
+    }
+  };
+  tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
+  tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });
+  root.finish();
+
+  if (c.fluids.empty()) throw CaseError(c.file, "the case has no [[fluid]] region");
+  if (c.walls.empty()) throw CaseError(c.file, "the case has no [[wall]]");
+  return c;
+}
+
+CaseSpec parse_case_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw CaseError({path, 0, 0}, "is a directory, not a case file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw CaseError({path, 0, 0},
+                    std::string("cannot open case file: ") +
+                        (std::filesystem::exists(path, ec) ? "permission denied" : "no such file"));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw CaseError({path, 0, 0}, "cannot read case file");
+  return parse_case_text(text.str(), path);
+}
+
+}  // namespace wcmps

@@ -1,0 +1,100 @@
+#pragma once
+/// @file CaseSpec.h
+/// @brief Everything a case file says, validated and with defaults filled in (keys, units and
+/// defaults are documented in docs/case-format.md). Plain data: the parser fills it, the scene
+/// builder and the simulation read it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+#include "core/Vec2.h"
+#include "particles/Fields.h"
+#include "particles/ParticleKind.h"
+#include "physics/PressureGradient.h"
+#include "physics/TimeStep.h"
+#include "physics/WallPressure.h"
+
+namespace wcmps {
+
+/// A region filled with fluid particles on the global lattice (a polygon; rectangles are
+/// stored as their four corners).
+struct FluidRegionSpec {
+  std::vector<Vec2> polygon;
+  Vec2 velocity;         ///< initial velocity (m/s)
+  SourceLocation where;  ///< the [[fluid]] table in the case file
+};
+
+/// A wall given by its surface line; particles are laid in rows parallel to it on its solid
+/// side (one wall row, then ghost rows).
+struct WallSpec {
+  std::vector<Vec2> points;    ///< surface polyline (m)
+  bool closed = false;         ///< last point joins the first
+  bool solid_on_right = true;  ///< solid side, looking along the polyline
+  SourceLocation where;
+};
+
+enum class NegativePressure { Zero, Keep };
+
+struct CaseSpec {
+  // [case]
+  std::string name = "case";
+  std::string description;
+  SourceLocation file;      ///< the file it came from (line 0)
+  std::string source_text;  ///< the file's text, copied into the run directory
+
+  // [particles]
+  double dl = 0.0;              ///< particle spacing DL (m)
+  double re_over_dl = 3.5;      ///< kernel radius re / DL
+  Vec2 lattice_origin;          ///< fluid lattice points sit at origin + (i + 1/2, j + 1/2) DL
+  double wall_clearance = 0.5;  ///< lattice points closer than this x DL to a wall are dropped
+  /// Start the fluid in the hydrostatic state of the equation of state (rows moved closer with
+  /// depth) instead of on the uncompressed lattice, where p = 0 everywhere and the column first
+  /// falls onto itself.
+  bool hydrostatic_start = true;
+
+  // [physics]
+  double density = 1000.0;              ///< rho0 (kg/m^3)
+  double kinematic_viscosity = 1.0e-6;  ///< nu (m^2/s)
+  Vec2 gravity{0.0, -9.81};             ///< m/s^2
+  std::optional<double> sound_speed;    ///< c0 (m/s); if absent, from sound_speed_factor
+  double sound_speed_factor = 10.0;     ///< c0 = factor * sqrt(2 g H_fluid) when c0 not given
+  double eos_exponent = 7.0;            ///< gamma
+  double artificial_viscosity = 0.02;   ///< Monaghan alpha (-); 0 = off
+  double surface_threshold = 0.97;      ///< beta
+  PressureGradientScheme pressure_gradient = PressureGradientScheme::Suzuki2007;
+  NegativePressure negative_pressure = NegativePressure::Zero;
+  WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
+
+  // [time]
+  double end_time = 0.0;  ///< s
+  TimeStepMode step_mode = TimeStepMode::Courant;
+  double fixed_step = 2.5e-5;
+  double courant = 0.4;
+  double viscous_number = 0.125;
+
+  // [output]
+  double output_interval = 0.0;      ///< s; 0 = only the listed times
+  std::vector<double> output_times;  ///< s, increasing
+  bool output_initial = true;        ///< write the state at t = 0
+  std::vector<FieldId> output_fields;
+  std::vector<ParticleKind> output_kinds;
+  bool output_double_precision = false;
+
+  // [neighbours]
+  double neighbour_skin = 0.2;  ///< list cutoff = re + skin x DL
+  int sort_interval = 50;       ///< steps between reorderings of fluid particles by cell
+
+  // [stability]
+  double max_density_ratio = 1.2;  ///< n*/n0 above this stops the run
+  std::optional<std::pair<Vec2, Vec2>> domain;
+
+  std::vector<FluidRegionSpec> fluids;
+  std::vector<WallSpec> walls;
+
+  double re() const { return re_over_dl * dl; }
+};
+
+}  // namespace wcmps

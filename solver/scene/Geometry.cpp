@@ -1,0 +1,118 @@
+#include "scene/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace wcmps {
+
+bool polygon_contains(const std::vector<Vec2>& poly, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 > 0.0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+bool segments_intersect(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) {
+  const double d1 = cross(q1 - q0, p0 - q0), d2 = cross(q1 - q0, p1 - q0);
+  const double d3 = cross(p1 - p0, q0 - p0), d4 = cross(p1 - p0, q1 - p0);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+    return true;
+  }
+  auto on = [](Vec2 a, Vec2 b, Vec2 c, double d) {  // c on [a, b] given collinear
+    return d == 0.0 && std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) &&
+           std::min(a.y, b.y) <= c.y && c.y <= std::max(a.y, b.y);
+  };
+  return on(q0, q1, p0, d1) || on(q0, q1, p1, d2) || on(p0, p1, q0, d3) || on(p0, p1, q1, d4);
+}
+
+std::vector<Segment> polyline_segments(const std::vector<Vec2>& pts, bool closed) {
+  std::vector<Segment> s;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) s.push_back({pts[i], pts[i + 1]});
+  if (closed) s.push_back({pts.back(), pts.front()});
+  return s;
+}
+
+std::vector<Vec2> solid_normals(const std::vector<Segment>& segments, bool solid_on_right) {
+  std::vector<Vec2> n;
+  for (const auto& s : segments) {
+    const Vec2 d = (s.b - s.a) * (1.0 / norm(s.b - s.a));
+    n.push_back(solid_on_right ? right_normal(d) : -right_normal(d));
+  }
+  return n;
+}
+
+std::vector<Vec2> offset_polyline(const std::vector<Vec2>& pts, bool closed,
+                                  const std::vector<Vec2>& normals, double distance) {
+  const std::size_t np = pts.size();
+  const std::size_t ns = normals.size();
+  std::vector<Vec2> out(np);
+  for (std::size_t i = 0; i < np; ++i) {
+    const bool has_prev = closed || i > 0;
+    const bool has_next = closed || i + 1 < np;
+    const Vec2 n_prev = has_prev ? normals[(i + ns - 1) % ns] : normals[i];
+    const Vec2 n_next = has_next ? normals[i % ns] : n_prev;
+    // Mitre: the point at `distance` from both offset lines.
+    const double c = 1.0 + dot(n_prev, n_next);
+    if (c < 1e-6) throw std::domain_error("wall turns back on itself at a vertex");
+    out[i] = pts[i] + (n_prev + n_next) * (distance / c);
+  }
+  for (std::size_t s = 0; s < ns; ++s) {
+    const Vec2 a0 = pts[s], b0 = pts[(s + 1) % np];
+    const Vec2 a1 = out[s], b1 = out[(s + 1) % np];
+    if (dot(b1 - a1, b0 - a0) <= 0.0) {
+      throw std::domain_error("segment " + std::to_string(s + 1) +
+                              " is too short for the wall rows at its corners");
+    }
+  }
+  return out;
+}
+
+std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& pts, bool closed,
+                                            double spacing) {
+  std::vector<PolylineSample> out;
+  const auto segs = polyline_segments(pts, closed);
+  const std::size_t ns = segs.size();
+  for (std::size_t s = 0; s < ns; ++s) {
+    const Vec2 a = segs[s].a, b = segs[s].b;
+    const double length = norm(b - a);
+    const Vec2 dir = (b - a) * (1.0 / length);
+    const bool free_start = !closed && s == 0;
+    const bool free_end = !closed && s + 1 == ns;
+    const bool skip_start = s > 0 || closed;      // the shared vertex was placed already...
+    const bool skip_end = closed && s + 1 == ns;  // ...or is the first point of the line
+    std::vector<Vec2> points;
+    if (free_start != free_end) {
+      // One free end: exactly `spacing` apart from the corner, so rows stay in line with the
+      // lattice; the free end itself only if more than half a spacing remains.
+      const Vec2 corner = free_end ? a : b;
+      const Vec2 out_dir = free_end ? dir : -dir;
+      const auto m = static_cast<int>(std::floor(length / spacing + 1e-9));
+      for (int k = 0; k <= m; ++k) points.push_back(corner + out_dir * (k * spacing));
+      if (length - m * spacing > 0.5 * spacing * (1.0 + 1e-9)) points.push_back(free_end ? b : a);
+      if (!free_end) std::reverse(points.begin(), points.end());
+    } else {
+      // Both ends corners (or both free): round(length / spacing) equal steps.
+      const int m = std::max(1, static_cast<int>(std::lround(length / spacing)));
+      for (int k = 0; k <= m; ++k) points.push_back(a + (b - a) * (static_cast<double>(k) / m));
+    }
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if ((k == 0 && skip_start) || (k + 1 == points.size() && skip_end)) continue;
+      out.push_back({points[k], static_cast<int>(s)});
+    }
+  }
+  return out;
+}
+
+}  // namespace wcmps

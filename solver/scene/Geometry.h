@@ -1,0 +1,49 @@
+#pragma once
+/// @file Geometry.h
+/// @brief Plane geometry for building scenes: polygons, polylines, their offsets and sampling.
+
+#include <vector>
+
+#include "core/Vec2.h"
+
+namespace wcmps {
+
+struct Segment {
+  Vec2 a, b;
+};
+
+/// Even-odd point-in-polygon test.
+bool polygon_contains(const std::vector<Vec2>& polygon, Vec2 p);
+
+/// Distance from p to the segment [a, b].
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+
+/// True when the segments [p0, p1] and [q0, q1] cross or touch.
+bool segments_intersect(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1);
+
+/// Segments of a polyline (closing segment included when `closed`).
+std::vector<Segment> polyline_segments(const std::vector<Vec2>& points, bool closed);
+
+/// Unit normal of each segment pointing to the solid side.
+std::vector<Vec2> solid_normals(const std::vector<Segment>& segments, bool solid_on_right);
+
+/// The polyline moved by `distance` along the solid normals, with mitred joins (so that rows
+/// at successive distances nest around corners). Throws std::domain_error if a segment would
+/// turn back on itself (a corner too sharp for the offset).
+std::vector<Vec2> offset_polyline(const std::vector<Vec2>& points, bool closed,
+                                  const std::vector<Vec2>& normals, double distance);
+
+/// A point laid along a polyline, with the segment it lies on.
+struct PolylineSample {
+  Vec2 position;
+  int segment;
+};
+
+/// Points along the polyline, shared vertices once. A segment between two vertices shared with
+/// neighbouring segments is divided into round(length / spacing) equal steps (at least one);
+/// a segment with one free end (first or last of an open polyline) is laid exactly `spacing`
+/// apart from its shared vertex, its free end added if more than half a spacing remains.
+std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& points, bool closed,
+                                            double spacing);
+
+}  // namespace wcmps

@@ -1,0 +1,348 @@
+#include "scene/SceneBuilder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "neighbours/CellGrid.h"
+
+namespace wcmps {
+namespace {
+
+std::string at(Vec2 p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", p.x, p.y);
+  return buf;
+}
+
+std::string wall_label(std::size_t k) {
+  return "[[wall]] #" + std::to_string(k + 1);
+}
+std::string fluid_label(std::size_t k) {
+  return "[[fluid]] #" + std::to_string(k + 1);
+}
+
+struct WallGeometry {
+  std::vector<Segment> surface;
+  std::vector<Vec2> normals;  // into the solid
+  bool closed = false;
+  double thickness = 0.0;  // from the surface to the last ghost row + DL/2
+};
+
+/// Signed distance of p to the wall surface: negative on the fluid side, positive in the
+/// solid, using the normal of the nearest segment (the mean normal at a shared vertex).
+double signed_distance(const WallGeometry& w, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  double sign = -1.0;
+  for (std::size_t s = 0; s < w.surface.size(); ++s) {
+    const Vec2 a = w.surface[s].a, b = w.surface[s].b;
+    const double d = distance_to_segment(p, a, b);
+    if (d < best - 1e-15) {
+      best = d;
+      const Vec2 ab = b - a;
+      const double t = dot(p - a, ab) / dot(ab, ab);
+      Vec2 n = w.normals[s];
+      // At a vertex shared with a neighbouring segment, use the mean of both normals.
+      const std::size_t ns = w.surface.size();
+      if (t <= 0.0 && (s > 0 || w.closed)) n = n + w.normals[(s + ns - 1) % ns];
+      if (t >= 1.0 && (s + 1 < ns || w.closed)) n = n + w.normals[(s + 1) % ns];
+      sign = dot(p - (a + std::clamp(t, 0.0, 1.0) * ab), n) > 0.0 ? 1.0 : -1.0;
+    }
+  }
+  return sign * best;
+}
+
+/// Does the ray from p along direction g hit the fluid side of a wall surface?
+bool has_wall_along(const std::vector<WallGeometry>& walls, Vec2 p, Vec2 g, double reach) {
+  const Vec2 q = p + g * reach;
+  for (const auto& w : walls) {
+    for (std::size_t s = 0; s < w.surface.size(); ++s) {
+      const auto& seg = w.surface[s];
+      if (dot(p - seg.a, w.normals[s]) < 0.0 && segments_intersect(p, q, seg.a, seg.b)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// The fluid particles in runs along gravity (-y): each lattice column split where rows are
+/// not DL apart; each run sorted from its bottom up.
+std::vector<std::vector<std::size_t>> column_runs(const std::vector<ParticleSeed>& fluid,
+                                                  const CaseSpec& spec) {
+  std::map<long, std::vector<std::size_t>> columns;
+  for (std::size_t k = 0; k < fluid.size(); ++k) {
+    const double cx = (fluid[k].position.x - spec.lattice_origin.x) / spec.dl - 0.5;
+    columns[std::lround(cx)].push_back(k);
+  }
+  std::vector<std::vector<std::size_t>> runs;
+  for (auto& [col, ids] : columns) {
+    std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) {
+      return fluid[a].position.y < fluid[b].position.y;
+    });
+    std::size_t begin = 0;
+    while (begin < ids.size()) {
+      std::size_t end = begin + 1;
+      while (end < ids.size() &&
+             fluid[ids[end]].position.y - fluid[ids[end - 1]].position.y < 1.5 * spec.dl) {
+        ++end;
+      }
+      runs.emplace_back(ids.begin() + begin, ids.begin() + end);
+      begin = end;
+    }
+  }
+  return runs;
+}
+
+/// Puts the fluid in the hydrostatic state of the Tait equation, n/n0 = s(h) =
+/// (1 + gamma g h / c0^2)^(1/gamma) at depth h below the top of its run (gravity along -y):
+/// rows are moved closer, to the spacing whose lattice sum gives n/n0 = s (the discrete n of
+/// a squeezed lattice grows 1.23 times faster than 1/dy at re = 3.5 DL), the bottom row
+/// staying. Depths repeat from column to column, so each spacing is solved once.
+void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spec, double c0) {
+  const double dl = spec.dl;
+  const double g = -spec.gravity.y;
+  auto s = [&](double depth) {
+    return std::pow(1.0 + spec.eos_exponent * g * depth / (c0 * c0), 1.0 / spec.eos_exponent);
+  };
+  std::map<long, double> spacing;  // by depth in half spacings
+  for (const auto& run : column_runs(fluid, spec)) {
+    const double top = fluid[run.back()].position.y + 0.5 * dl;  // free surface of the run
+    double y = fluid[run.front()].position.y;
+    for (std::size_t k = 1; k < run.size(); ++k) {
+      const double depth = top - 0.5 * (fluid[run[k]].position.y + fluid[run[k - 1]].position.y);
+      const long key = std::lround(depth / dl * 2.0);
+      auto it = spacing.find(key);
+      if (it == spacing.end()) {
+        it = spacing.emplace(key, row_spacing_for_density_ratio(dl, spec.re(), s(depth))).first;
+      }
+      y += it->second;
+      fluid[run[k]].position.y = y;
+    }
+  }
+}
+
+}  // namespace
+
+Scene build_scene(const CaseSpec& spec) {
+  Scene scene;
+  const double dl = spec.dl;
+  const double re = spec.re();
+  // Ghost rows k = 1..K with k DL < re: every wall particle sees a full kernel behind it.
+  scene.ghost_layers = static_cast<int>(std::ceil(re / dl - 1e-9)) - 1;
+  scene.lattice = square_lattice_constants(dl, re);
+
+  // ---- walls: one wall row and K ghost rows parallel to each surface line
+  std::vector<ParticleSeed> walls, ghosts;
+  std::vector<std::int32_t> ghost_sources;
+  std::vector<std::size_t> boundary_owner;  // wall spec of each boundary particle (walls, ghosts)
+  std::vector<WallGeometry> geometry;
+  std::vector<std::size_t> ghost_owner;
+  for (std::size_t w = 0; w < spec.walls.size(); ++w) {
+    const WallSpec& ws = spec.walls[w];
+    WallGeometry g;
+    g.surface = polyline_segments(ws.points, ws.closed);
+    g.normals = solid_normals(g.surface, ws.solid_on_right);
+    g.closed = ws.closed;
+    g.thickness = (scene.ghost_layers + 1) * dl;
+    const std::size_t first_wall = walls.size();
+    for (int k = 0; k <= scene.ghost_layers; ++k) {
+      std::vector<Vec2> row;
+      try {
+        row = offset_polyline(ws.points, ws.closed, g.normals, (k + 0.5) * dl);
+      } catch (const std::domain_error& e) {
+        throw CaseError(ws.where, wall_label(w) + ": " + e.what() + " (row " + std::to_string(k) +
+                                      " at " + std::to_string(k + 0.5) + " DL behind the surface)");
+      }
+      for (const auto& s : sample_polyline(row, ws.closed, dl)) {
+        if (k == 0) {
+          walls.push_back({s.position, {}});
+          continue;
+        }
+        // The ghost copies the wall particle nearest to its foot on the wall row.
+        const Vec2 foot = s.position - g.normals[s.segment] * (k * dl);
+        std::size_t best = first_wall;
+        double best_d = std::numeric_limits<double>::infinity();
+        for (std::size_t i = first_wall; i < walls.size(); ++i) {
+          const double d = norm(walls[i].position - foot);
+          if (d < best_d) best_d = d, best = i;
+        }
+        ghosts.push_back({s.position, {}});
+        ghost_sources.push_back(static_cast<std::int32_t>(best));
+        ghost_owner.push_back(w);
+      }
+      if (k == 0) {
+        const auto row_segments = polyline_segments(row, ws.closed);
+        scene.wall_rows.insert(scene.wall_rows.end(), row_segments.begin(), row_segments.end());
+        for (std::size_t i = first_wall; i < walls.size(); ++i) boundary_owner.push_back(w);
+      }
+    }
+    geometry.push_back(std::move(g));
+  }
+  boundary_owner.insert(boundary_owner.end(), ghost_owner.begin(), ghost_owner.end());
+
+  // ---- fluid: lattice points inside any fluid shape, away from wall surfaces
+  std::map<std::pair<long, long>, std::pair<Vec2, std::size_t>>
+      lattice;  // (i, j) -> velocity, region
+  for (std::size_t f = 0; f < spec.fluids.size(); ++f) {
+    const auto& poly = spec.fluids[f].polygon;
+    Vec2 lo = poly[0], hi = poly[0];
+    for (const Vec2 p : poly) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    const Vec2 o = spec.lattice_origin;
+    const long i0 = static_cast<long>(std::floor((lo.x - o.x) / dl)) - 1;
+    const long i1 = static_cast<long>(std::ceil((hi.x - o.x) / dl)) + 1;
+    const long j0 = static_cast<long>(std::floor((lo.y - o.y) / dl)) - 1;
+    const long j1 = static_cast<long>(std::ceil((hi.y - o.y) / dl)) + 1;
+    if ((i1 - i0) * (j1 - j0) > 200'000'000L) {
+      throw CaseError(spec.fluids[f].where, fluid_label(f) +
+                                                ": more than 2e8 lattice points; "
+                                                "check the spacing and the shape");
+    }
+    std::int64_t placed = 0;
+    for (long j = j0; j <= j1; ++j) {
+      for (long i = i0; i <= i1; ++i) {
+        const Vec2 p{o.x + (i + 0.5) * dl, o.y + (j + 0.5) * dl};
+        if (!polygon_contains(poly, p)) continue;
+        ++placed;
+        lattice.emplace(std::make_pair(i, j), std::make_pair(spec.fluids[f].velocity, f));
+      }
+    }
+    if (placed == 0) {
+      throw CaseError(spec.fluids[f].where, fluid_label(f) +
+                                                ": the shape holds no lattice point at spacing " +
+                                                std::to_string(dl) + " m");
+    }
+  }
+  std::vector<ParticleSeed> fluid;
+  std::vector<std::size_t> fluid_region;
+  // Points exactly DL/2 from a surface (the usual case) must stay: allow for rounding.
+  const double clearance = spec.wall_clearance * dl * (1.0 - 1e-6);
+  for (const auto& [ij, vf] : lattice) {
+    const Vec2 p{spec.lattice_origin.x + (ij.first + 0.5) * dl,
+                 spec.lattice_origin.y + (ij.second + 0.5) * dl};
+    bool keep = true;
+    for (std::size_t w = 0; w < geometry.size() && keep; ++w) {
+      const double sd = signed_distance(geometry[w], p);
+      if (sd < 0.0 && -sd < clearance) keep = false;  // fluid side, too close: trimmed
+      if (sd >= 0.0 && sd < geometry[w].thickness) {
+        throw CaseError(spec.fluids[vf.second].where,
+                        fluid_label(vf.second) + " overlaps " + wall_label(w) + " (line " +
+                            std::to_string(spec.walls[w].where.line) + "): fluid at " + at(p) +
+                            " is inside the wall");
+      }
+    }
+    if (!keep) {
+      ++scene.trimmed_fluid;
+      continue;
+    }
+    fluid.push_back({p, vf.first});
+    fluid_region.push_back(vf.second);
+  }
+  if (fluid.empty()) {
+    throw CaseError(spec.fluids[0].where, "no fluid particle is left after keeping " +
+                                              std::to_string(spec.wall_clearance) +
+                                              " DL away from the walls");
+  }
+
+  // ---- containment: every fluid particle has a wall below it (along gravity)
+  Vec2 lo = fluid[0].position, hi = lo;
+  auto grow = [&](Vec2 p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  };
+  for (const auto& s : walls) grow(s.position);
+  for (const auto& s : ghosts) grow(s.position);
+  for (const auto& s : fluid) grow(s.position);
+  const double g = norm(spec.gravity);
+  if (g > 0.0) {
+    const Vec2 down = spec.gravity * (1.0 / g);
+    const double reach = 2.0 * norm(hi - lo) + dl;
+    double top = std::numeric_limits<double>::infinity(), bottom = -top;
+    for (std::size_t k = 0; k < fluid.size(); ++k) {
+      const Vec2 p = fluid[k].position;
+      top = std::min(top, dot(p, down));
+      bottom = std::max(bottom, dot(p, down));
+      if (!has_wall_along(geometry, p, down, reach)) {
+        throw CaseError(spec.fluids[fluid_region[k]].where,
+                        fluid_label(fluid_region[k]) + " lies outside every wall: fluid at " +
+                            at(p) + " has no wall below it");
+      }
+    }
+    scene.fluid_height = bottom - top + dl;
+  }
+
+  // ---- walls must not overlap one another
+  {
+    std::vector<double> bx, by;
+    for (const auto* set : {&walls, &ghosts}) {
+      for (const auto& s : *set) {
+        bx.push_back(s.position.x);
+        by.push_back(s.position.y);
+      }
+    }
+    CellGrid grid;
+    grid.configure(lo - Vec2{dl, dl}, hi + Vec2{dl, dl}, dl);
+    grid.bin(bx.data(), by.data(), static_cast<std::int64_t>(bx.size()));
+    const double min_gap = 0.5 * dl;
+    for (std::size_t i = 0; i < bx.size(); ++i) {
+      const int cx = grid.cell_x(bx[i]), cy = grid.cell_y(by[i]);
+      for (int yy = std::max(cy - 1, 0); yy <= std::min(cy + 1, grid.ny() - 1); ++yy) {
+        for (int xx = std::max(cx - 1, 0); xx <= std::min(cx + 1, grid.nx() - 1); ++xx) {
+          for (auto* q = grid.cell_begin(xx, yy); q != grid.cell_end(xx, yy); ++q) {
+            const std::size_t j = static_cast<std::size_t>(*q);
+            if (j <= i || boundary_owner[i] == boundary_owner[j]) continue;
+            if (std::hypot(bx[j] - bx[i], by[j] - by[i]) < min_gap) {
+              const std::size_t a = boundary_owner[i], b = boundary_owner[j];
+              throw CaseError(spec.walls[std::max(a, b)].where,
+                              wall_label(std::max(a, b)) + " overlaps " +
+                                  wall_label(std::min(a, b)) + " near " + at({bx[i], by[i]}) +
+                                  "; join touching walls into one polyline");
+            }
+          }
+        }
+      }
+    }
+  }
+
+  // ---- domain and sound speed
+  if (spec.domain) {
+    scene.domain_lo = spec.domain->first;
+    scene.domain_hi = spec.domain->second;
+    for (const auto& s : fluid) {
+      const Vec2 p = s.position;
+      if (p.x < scene.domain_lo.x || p.y < scene.domain_lo.y || p.x > scene.domain_hi.x ||
+          p.y > scene.domain_hi.y) {
+        throw CaseError(spec.file, "[stability] domain does not contain the fluid at " + at(p));
+      }
+    }
+  } else {
+    // The particles' box, with room for a splash as high again above it.
+    scene.domain_lo = lo - Vec2{re, re};
+    scene.domain_hi = hi + Vec2{re, re + (hi.y - lo.y)};
+  }
+  if (spec.sound_speed) {
+    scene.sound_speed = *spec.sound_speed;
+  } else {
+    if (g == 0.0) {
+      throw CaseError(spec.file, "[physics] sound_speed is required when gravity is zero");
+    }
+    scene.sound_speed = spec.sound_speed_factor * std::sqrt(2.0 * g * scene.fluid_height);
+  }
+  if (spec.hydrostatic_start && g > 0.0) {
+    if (spec.gravity.x != 0.0 || spec.gravity.y >= 0.0) {
+      throw CaseError(spec.file,
+                      "[particles] initial_state = \"hydrostatic\" needs gravity along -y; "
+                      "use initial_state = \"lattice\"");
+    }
+    set_hydrostatic_state(fluid, spec, scene.sound_speed);
+  }
+  scene.particles = ParticleSet(walls, ghosts, ghost_sources, fluid);
+  return scene;
+}
+
+}  // namespace wcmps

@@ -1,0 +1,285 @@
+#include "simulation/Simulation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Error.h"
+#include "core/Parallel.h"
+
+namespace wcmps {
+namespace {
+
+constexpr int kDimension = 2;
+
+/// Why a particle fails the stability checks (0 = it does not).
+enum Failure : std::uint8_t {
+  kOk = 0,
+  kNotFinite,
+  kLeftDomain,
+  kDensityBlowUp,
+  kCrossedWall,
+  kMovedTooFar,
+};
+
+const char* failure_text(std::uint8_t f) {
+  switch (f) {
+    case kNotFinite:
+      return "position, velocity or pressure is not finite";
+    case kLeftDomain:
+      return "left the domain";
+    case kDensityBlowUp:
+      return "number density exceeds max_density_ratio x n0";
+    case kCrossedWall:
+      return "crossed a wall";
+    case kMovedTooFar:
+      return "moved further in one step than the neighbour skin allows (time step too large)";
+    default:
+      return "ok";
+  }
+}
+
+}  // namespace
+
+Simulation::Simulation(const CaseSpec& spec, Scene scene)
+    : scene_(std::move(scene)),
+      ops_(spec.re(), kDimension, scene_.lattice.n0, scene_.lattice.lambda,
+           scene_.lattice.gradient_correction),
+      eos_{spec.density, scene_.sound_speed, spec.eos_exponent, scene_.lattice.n0},
+      surface_{spec.surface_threshold, scene_.lattice.n0},
+      viscosity_{spec.kinematic_viscosity},
+      artificial_viscosity_{spec.artificial_viscosity, scene_.sound_speed},
+      gradient_scheme_(spec.pressure_gradient),
+      wall_scheme_(spec.wall_pressure),
+      zero_negative_pressure_(spec.negative_pressure == NegativePressure::Zero),
+      gravity_(spec.gravity),
+      density_(spec.density),
+      skin_(spec.neighbour_skin * spec.dl),
+      max_density_ratio_(spec.max_density_ratio),
+      sort_interval_(spec.sort_interval) {
+  rule_.mode = spec.step_mode;
+  rule_.fixed = spec.fixed_step;
+  rule_.courant = spec.courant;
+  rule_.viscous_number = spec.viscous_number;
+  rule_.dl = spec.dl;
+  rule_.c0 = scene_.sound_speed;
+  rule_.nu = spec.kinematic_viscosity;
+
+  ParticleSet& ps = scene_.particles;
+  grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
+  list_owners_ = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
+  order_.resize(ps.fluid_count());
+  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(),
+                            [&](std::int64_t i) { return std::hypot(ps.now.u[i], ps.now.v[i]); });
+  if (ps.fluid_count() == 0) max_speed_ = 0.0;
+  compute_initial_pressure();
+}
+
+void Simulation::compute_initial_pressure() {
+  // The pressure phases work on `next`, which holds the initial positions too.
+  ParticleSet& ps = scene_.particles;
+  find_neighbours();
+  compute_number_density();
+  compute_pressure();
+  ps.now.p = ps.next.p;
+  ps.now.n = ps.next.n;
+  ps.now.surface = ps.next.surface;
+  pairs_visited_ = 0;
+}
+
+void Simulation::step(double t_stop) {
+  double dt = rule_.step(max_speed_);
+  bool lands_on_stop = false;
+  if (rule_.mode == TimeStepMode::Courant) {
+    // Land exactly on t_stop, without leaving a sliver of a step before it.
+    if (time_ + dt >= t_stop) {
+      dt = t_stop - time_;
+      lands_on_stop = true;
+    } else if (time_ + 2.0 * dt > t_stop) {
+      dt = 0.5 * (t_stop - time_);
+    }
+  }
+  if (!(dt > 0.0)) return;
+
+  if (sort_interval_ > 0 && steps_ % sort_interval_ == 0) {
+    timer_.time(Phase::Reorder, [&] { reorder_by_cell(); });
+  }
+  timer_.time(Phase::Neighbours, [&] { find_neighbours(); });
+  timer_.time(Phase::Predict, [&] { predict(dt); });
+  timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
+  timer_.time(Phase::Pressure, [&] { compute_pressure(); });
+  timer_.time(Phase::Correct, [&] { correct(dt); });
+  timer_.time(Phase::Move, [&] { move(dt); });
+  timer_.time(Phase::Check, [&] { check_stability(dt); });
+
+  // The new state passed every check: it becomes the current one.
+  scene_.particles.now.swap(scene_.particles.next);
+  ++steps_;
+  last_dt_ = dt;
+  if (rule_.mode == TimeStepMode::Fixed) {
+    time_ = static_cast<double>(steps_) * rule_.fixed;  // no drift over many steps
+  } else {
+    time_ = lands_on_stop ? t_stop : time_ + dt;
+  }
+}
+
+void Simulation::find_neighbours() {
+  ParticleSet& ps = scene_.particles;
+  grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
+  neighbours_.build(grid_, ps.now.x.data(), ps.now.y.data(), ps.size(), ops_.re() + skin_,
+                    list_owners_);
+}
+
+void Simulation::predict(double dt) {
+  ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  ParticleState& t = ps.next;
+  const bool viscous = viscosity_.nu > 0.0;
+  const bool artificial = artificial_viscosity_.alpha > 0.0;
+  max_predicted_move_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    Vec2 a = gravity_;
+    if (viscous) {
+      a += viscosity_.acceleration(ops_, i, neighbours_.of(i), s.x.data(), s.y.data(), s.u.data(),
+                                   s.v.data());
+    }
+    if (artificial) {
+      a += artificial_viscosity_.acceleration(ops_, i, neighbours_.of(i), s.x.data(), s.y.data(),
+                                              s.u.data(), s.v.data());
+    }
+    t.u[i] = s.u[i] + dt * a.x;
+    t.v[i] = s.v[i] + dt * a.y;
+    t.x[i] = s.x[i] + dt * t.u[i];
+    t.y[i] = s.y[i] + dt * t.v[i];
+    return dt * std::hypot(t.u[i], t.v[i]);
+  });
+  pairs_visited_ += (viscous + artificial) * neighbours_.pair_count(ps.fluid_begin(), ps.size());
+}
+
+void Simulation::compute_number_density() {
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  for (const auto& [b, e] : list_owners_) {
+    parallel_for(b, e, [&](std::int64_t i) {
+      t.n[i] = ops_.number_density(i, neighbours_.of(i), t.x.data(), t.y.data());
+    });
+    pairs_visited_ += neighbours_.pair_count(b, e);
+  }
+}
+
+void Simulation::compute_pressure() {
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  // Free surface (Eq. 2.10) or equation of state (Eq. 2.9), for fluid particles and, with the
+  // "eos" wall scheme, for wall particles.
+  auto from_number_density = [&](std::int64_t i) {
+    const bool on_surface = surface_.is_surface(t.n[i]);
+    double p = on_surface ? 0.0 : eos_.pressure(t.n[i]);
+    if (zero_negative_pressure_ && p < 0.0) p = 0.0;
+    t.p[i] = p;
+    t.surface[i] = on_surface ? 1 : 0;
+  };
+  parallel_for(ps.fluid_begin(), ps.size(), from_number_density);
+  if (wall_scheme_ == WallPressureScheme::Eos) {
+    parallel_for(0, ps.wall_end(), from_number_density);
+  } else {
+    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+      const auto p =
+          WallPressure_Adami2012::pressure(w, neighbours_.of(w), t.x.data(), t.y.data(), t.p.data(),
+                                           ps.kind.data(), ops_.kernel(), density_, gravity_);
+      double pw = p.value_or(0.0);
+      if (zero_negative_pressure_ && pw < 0.0) pw = 0.0;
+      t.p[w] = pw;
+      t.surface[w] = p ? 0 : 1;
+    });
+    pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
+  }
+  // Ghost particles: the pressure of their wall particle along the wall normal (section 2.6).
+  parallel_for(ps.wall_end(), ps.fluid_begin(),
+               [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
+}
+
+void Simulation::correct(double dt) {
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const double c = -dt / density_;
+  with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
+    using Scheme = decltype(scheme);
+    parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+      const Vec2 g = Scheme::gradient(ops_, i, neighbours_.of(i), t.x.data(), t.y.data(),
+                                      t.p.data(), t.n.data(), ps.fluid_begin());
+      t.u[i] += c * g.x;
+      t.v[i] += c * g.y;
+    });
+  });
+  pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
+}
+
+void Simulation::move(double dt) {
+  ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  ParticleState& t = ps.next;
+  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    t.x[i] = s.x[i] + dt * t.u[i];
+    t.y[i] = s.y[i] + dt * t.v[i];
+    return std::hypot(t.u[i], t.v[i]);
+  });
+  if (ps.fluid_count() == 0) max_speed_ = 0.0;
+}
+
+void Simulation::check_stability(double dt) {
+  const ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  const ParticleState& t = ps.next;
+  const Vec2 lo = scene_.domain_lo, hi = scene_.domain_hi;
+  const double n_max = max_density_ratio_ * ops_.n0();
+  const auto& rows = scene_.wall_rows;
+  // The list was built at r^n with cutoff re + skin: pairs within re at r* are all in it while
+  // no two particles close in by more than the skin, i.e. each moves less than skin / 2.
+  const bool moved_too_far = 2.0 * max_predicted_move_ > skin_;
+  auto failure = [&](std::int64_t i) -> std::uint8_t {
+    const double x = t.x[i], y = t.y[i];
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(t.u[i]) ||
+        !std::isfinite(t.v[i]) || !std::isfinite(t.p[i])) {
+      return kNotFinite;
+    }
+    if (x < lo.x || y < lo.y || x > hi.x || y > hi.y) return kLeftDomain;
+    const Vec2 a{s.x[i], s.y[i]}, b{x, y};
+    for (const auto& r : rows) {
+      if (segments_intersect(a, b, r.a, r.b)) return kCrossedWall;
+    }
+    if (t.n[i] > n_max) return kDensityBlowUp;
+    if (moved_too_far && dt * std::hypot(t.u[i], t.v[i]) > 0.5 * skin_) return kMovedTooFar;
+    return kOk;
+  };
+  const std::int64_t failed = parallel_count(ps.fluid_begin(), ps.size(),
+                                             [&](std::int64_t i) { return failure(i) != kOk; });
+  if (failed == 0) return;
+  // Report the failing particle with the smallest id, so that reports do not depend on threads.
+  std::int64_t first = -1;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    if (failure(i) != kOk && (first < 0 || ps.id[i] < ps.id[first])) first = i;
+  }
+  InstabilityReport r;
+  r.step = steps_ + 1;
+  r.time = time_ + dt;
+  r.particle_id = ps.id[first];
+  r.x = t.x[first];
+  r.y = t.y[first];
+  r.reason = failure_text(failure(first));
+  if (failure(first) == kDensityBlowUp) {
+    r.reason += " (n*/n0 = " + std::to_string(t.n[first] / ops_.n0()) + ")";
+  }
+  r.particles_affected = failed;
+  throw InstabilityError(r);
+}
+
+void Simulation::reorder_by_cell() {
+  ParticleSet& ps = scene_.particles;
+  grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
+  std::size_t k = 0;
+  for (const std::int32_t i : grid_.members()) {
+    if (i >= ps.fluid_begin()) order_[k++] = i;
+  }
+  ps.reorder_fluid(order_);
+}
+
+}  // namespace wcmps

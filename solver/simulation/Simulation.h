@@ -1,0 +1,90 @@
+#pragma once
+/// @file Simulation.h
+/// @brief The WC-MPS time step of the study (thesis section 2.7, Fig. 2-5) over a scene.
+
+#include <cstdint>
+#include <vector>
+
+#include "neighbours/CellGrid.h"
+#include "neighbours/NeighbourList.h"
+#include "operators/MpsOperators.h"
+#include "physics/EquationOfState.h"
+#include "physics/FreeSurface.h"
+#include "physics/PressureGradient.h"
+#include "physics/TimeStep.h"
+#include "physics/Viscosity.h"
+#include "physics/WallPressure.h"
+#include "scene/CaseSpec.h"
+#include "scene/SceneBuilder.h"
+#include "simulation/PhaseTimer.h"
+
+namespace wcmps {
+
+class Simulation {
+ public:
+  Simulation(const CaseSpec& spec, Scene scene);
+
+  /// Advances one time step, shortened if needed so that time() does not pass t_stop.
+  /// Throws InstabilityError if the new state fails a stability check; the state then stays
+  /// that of the last good step.
+  void step(double t_stop);
+
+  double time() const { return time_; }
+  std::int64_t steps() const { return steps_; }
+  double last_dt() const { return last_dt_; }
+  /// The step the time-step rule would take now.
+  double next_dt() const { return rule_.step(max_speed_); }
+  double max_speed() const { return max_speed_; }
+  double density() const { return density_; }
+
+  const ParticleSet& particles() const { return scene_.particles; }
+  const Scene& scene() const { return scene_; }
+  const MpsOperators& operators() const { return ops_; }
+  const TimeStepRule& time_step_rule() const { return rule_; }
+  const PhaseTimer& timer() const { return timer_; }
+  /// Neighbour entries visited by the operators so far (one per (i, j) per operator pass).
+  std::int64_t pairs_visited() const { return pairs_visited_; }
+
+ private:
+  // The phases of one step, in order.
+  void find_neighbours();           // cell grid + lists at r^n (section 2.3)
+  void predict(double dt);          // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
+  void compute_number_density();    // n* at r* (Eq. 2.17)
+  void compute_pressure();          // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
+  void correct(double dt);          // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19)
+  void move(double dt);             // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
+  void check_stability(double dt);  // NaN, domain, density, walls, displacement
+  void reorder_by_cell();           // cache locality, every sort_interval steps
+  void compute_initial_pressure();  // n and p of the initial state, for its frame
+
+  Scene scene_;
+  MpsOperators ops_;
+  EquationOfState_TaitShakibaeiniaJin2010 eos_;
+  FreeSurface_Koshizuka1996 surface_;
+  Viscosity_Koshizuka1996Laplacian viscosity_;
+  ArtificialViscosity_Monaghan1992 artificial_viscosity_;
+  PressureGradientScheme gradient_scheme_;
+  WallPressureScheme wall_scheme_;
+  bool zero_negative_pressure_;
+  TimeStepRule rule_;
+  Vec2 gravity_;
+  double density_;
+  double skin_;
+  double max_density_ratio_;
+  int sort_interval_;
+
+  CellGrid grid_;
+  NeighbourList neighbours_;
+  std::vector<IndexRange> list_owners_;  // particles that need neighbour lists
+  std::vector<std::int32_t> order_;      // scratch for reorder_by_cell
+
+  double time_ = 0.0;
+  std::int64_t steps_ = 0;
+  double last_dt_ = 0.0;
+  double max_speed_ = 0.0;
+  double max_predicted_move_ = 0.0;
+  PhaseTimer timer_;
+  std::int64_t pairs_visited_ = 0;
+};
+
+}  // namespace wcmps
