@@ -1,0 +1,26 @@
+#pragma once
+/// @file TestSupport.h
+/// @brief Helpers shared by the tests: paths into the source tree, scratch directories,
+/// small particle sets.
+
+#include <filesystem>
+#include <string>
+
+#include "scene/CaseSpec.h"
+
+namespace wcmps::test {
+
+/// Absolute path of a file in the source tree, e.g. "cases/dambreak/case.toml".
+std::string source_path(const std::string& relative);
+
+/// A case file of cases/ parsed, ready for overrides of its fields.
+CaseSpec load_case(const std::string& relative);
+
+/// An empty scratch directory unique to the running test (removed first if it exists).
+std::filesystem::path scratch_dir(const std::string& name);
+
+/// The text of a minimal valid case (a small tank of still water), for parser tests that
+/// change one thing of it.
+std::string minimal_case_text();
+
+}  // namespace wcmps::test

@@ -1,0 +1,176 @@
+// Every class of bad case file gives a CaseError naming the file, line and column; a good one
+// gets its defaults.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "scene/CaseParser.h"
+#include "scene/SceneBuilder.h"
+#include "support/TestSupport.h"
+
+namespace wcmps {
+namespace {
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << "test bug: '" << from << "' not in the case text";
+  if (pos != std::string::npos) s.replace(pos, from.size(), to);
+  return s;
+}
+
+/// Parses (and builds) `text`; expects a CaseError at `line` (0: anywhere) containing `what`.
+void expect_error(const std::string& text, std::uint32_t line, const std::string& what) {
+  try {
+    const CaseSpec spec = parse_case_text(text, "bad.toml");
+    (void)build_scene(spec);
+    ADD_FAILURE() << "no error; expected: " << what;
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.where().file, "bad.toml");
+    if (line > 0) {
+      EXPECT_EQ(e.where().line, line) << e.what();
+    }
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    // The message starts with the location, as compilers print it.
+    EXPECT_EQ(std::string(e.what()).rfind("bad.toml", 0), 0u) << e.what();
+  }
+}
+
+TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
+  const CaseSpec c = parse_case_text(test::minimal_case_text(), "mini.toml");
+  EXPECT_EQ(c.name, "mini");
+  EXPECT_DOUBLE_EQ(c.dl, 0.01);
+  EXPECT_DOUBLE_EQ(c.re_over_dl, 3.5);
+  EXPECT_DOUBLE_EQ(c.density, 1000.0);
+  EXPECT_DOUBLE_EQ(c.kinematic_viscosity, 1.0e-6);
+  EXPECT_DOUBLE_EQ(c.gravity.y, -9.81);
+  EXPECT_FALSE(c.sound_speed.has_value());
+  EXPECT_DOUBLE_EQ(c.eos_exponent, 7.0);
+  EXPECT_DOUBLE_EQ(c.surface_threshold, 0.97);
+  EXPECT_DOUBLE_EQ(c.courant, 0.4);
+  EXPECT_DOUBLE_EQ(c.artificial_viscosity, 0.02);
+  EXPECT_EQ(c.step_mode, TimeStepMode::Courant);
+  EXPECT_EQ(c.pressure_gradient, PressureGradientScheme::Suzuki2007);
+  EXPECT_EQ(c.wall_pressure, WallPressureScheme::FluidExtrapolated);
+  EXPECT_EQ(c.output_fields.size(), std::size(kFields));
+  EXPECT_EQ(c.output_kinds.size(), 3u);
+  ASSERT_EQ(c.walls.size(), 1u);
+  EXPECT_TRUE(c.walls[0].solid_on_right);
+  ASSERT_EQ(c.fluids.size(), 1u);
+  EXPECT_EQ(c.fluids[0].polygon.size(), 4u);
+}
+
+TEST(CaseParser, EveryShippedCaseIsValid) {
+  for (const char* f : {"cases/dambreak/case.toml", "cases/hydrostatic/case.toml"}) {
+    const CaseSpec c = test::load_case(f);
+    EXPECT_NO_THROW((void)build_scene(c)) << f;
+  }
+}
+
+TEST(CaseParser, SyntaxErrorGivesLineAndColumn) {
+  const std::string text = replace(test::minimal_case_text(), "spacing = 0.01", "spacing = = 0.01");
+  try {
+    (void)parse_case_text(text, "bad.toml");
+    FAIL() << "no error";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.where().line, 5u);
+    EXPECT_GT(e.where().column, 1u);
+    EXPECT_NE(std::string(e.what()).find("syntax error"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CaseParser, UnknownKeyIsNamedWithItsPosition) {
+  const std::string text =
+      replace(test::minimal_case_text(), "spacing = 0.01", "spacing = 0.01\nspaceing = 2");
+  expect_error(text, 6, "unknown key 'spaceing' in [particles]");
+  expect_error(test::minimal_case_text() + "\n[solver]\nx = 1\n", 17, "unknown key 'solver'");
+}
+
+TEST(CaseParser, WrongTypeIsNamed) {
+  expect_error(replace(test::minimal_case_text(), "end = 0.01", "end = \"soon\""), 8,
+               "[time] end: expected a number, got a string");
+  expect_error(test::minimal_case_text() + "\n[output]\nfields = \"pressure\"\n", 18,
+               "[output] fields: expected an array");
+}
+
+TEST(CaseParser, OutOfRangeValueIsNamedWithTheRange) {
+  expect_error(replace(test::minimal_case_text(), "spacing = 0.01", "spacing = -0.01"), 5,
+               "[particles] spacing: value -0.01 is out of range (0, inf)");
+  expect_error(test::minimal_case_text() + "\n[physics]\nsurface_threshold = 1.2\n", 18,
+               "surface_threshold: value 1.2 is out of range");
+  expect_error(test::minimal_case_text() + "\n[time]\n", 0, "");  // duplicate table: syntax
+}
+
+TEST(CaseParser, InconsistentValuesAreNamed) {
+  expect_error(test::minimal_case_text() + "\n[output]\ntimes = [0.005, 0.002]\n", 18,
+               "must be increasing");
+  expect_error(test::minimal_case_text() + "\n[output]\ntimes = [0.5]\n", 18,
+               "out of range [0, 0.01]");
+  expect_error(test::minimal_case_text() + "\n[output]\nfields = [\"speed\"]\n", 18,
+               "unknown field \"speed\"");
+  expect_error(test::minimal_case_text() + "\n[physics]\npressure_gradient = \"sph\"\n", 18,
+               "\"sph\" is not one of");
+  expect_error(replace(test::minimal_case_text(), "end = 0.01",
+                       "end = 0.01\nstep = \"fixed\"\nfixed_step = 0.5"),
+               10, "fixed_step: is longer than the end time");
+}
+
+TEST(CaseParser, MissingRequiredKeysAndShapesAreNamed) {
+  expect_error(replace(test::minimal_case_text(), "end = 0.01", ""), 7, "[time] end is required");
+  expect_error(replace(test::minimal_case_text(), "solid = \"right\"", ""), 10,
+               "a polyline wall needs solid");
+  expect_error(
+      replace(test::minimal_case_text(), "rectangle = { min = [0.0, 0.0], max = [0.2, 0.1] }",
+              "velocity = [0.0, 0.0]"),
+      14, "give exactly one shape");
+  expect_error(replace(test::minimal_case_text(), "max = [0.2, 0.1]", "max = [0.2, 0.0]"), 15,
+               "max must be greater than min");
+}
+
+TEST(CaseParser, MissingOrUnreadableFileIsNamed) {
+  try {
+    (void)parse_case_file("/nonexistent/case.toml");
+    FAIL() << "no error";
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.where().file, "/nonexistent/case.toml");
+    EXPECT_NE(std::string(e.what()).find("no such file"), std::string::npos) << e.what();
+  }
+  const auto dir = test::scratch_dir("dir");
+  EXPECT_THROW((void)parse_case_file(dir.string()), CaseError);
+}
+
+TEST(SceneGeometry, FluidOutsideEveryWallIsRejected) {
+  // The fluid sits beside the tank, with no wall below it.
+  expect_error(replace(test::minimal_case_text(), "min = [0.0, 0.0], max = [0.2, 0.1]",
+                       "min = [0.5, 0.0], max = [0.7, 0.1]"),
+               14, "lies outside every wall");
+}
+
+TEST(SceneGeometry, FluidInsideAWallIsRejected) {
+  expect_error(replace(test::minimal_case_text(), "min = [0.0, 0.0], max = [0.2, 0.1]",
+                       "min = [-0.03, 0.0], max = [0.2, 0.1]"),
+               14, "overlaps [[wall]] #1");
+}
+
+TEST(SceneGeometry, OverlappingWallsAreRejected) {
+  // A second bottom 1 cm under the tank's: its rows fall on the first wall's ghost rows.
+  expect_error(test::minimal_case_text() +
+                   "\n[[wall]]\npolyline = [[0.05, -0.01], [0.15, -0.01]]\nsolid = \"right\"\n",
+               17, "[[wall]] #2 overlaps [[wall]] #1");
+}
+
+TEST(SceneGeometry, ACornerTooSharpForTheWallRowsIsRejected) {
+  // A spike 1 mm wide cannot hold rows 3.5 DL deep.
+  expect_error(test::minimal_case_text() +
+                   "\n[[wall]]\npolygon = [[0.1, 0.15], [0.101, 0.15], [0.1005, 0.19]]\n",
+               17, "[[wall]] #2");
+}
+
+TEST(SceneGeometry, GravityFreeCaseNeedsASoundSpeed) {
+  expect_error(test::minimal_case_text() + "\n[physics]\ngravity = [0.0, 0.0]\n", 0,
+               "sound_speed is required when gravity is zero");
+}
+
+}  // namespace
+}  // namespace wcmps

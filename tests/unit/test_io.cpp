@@ -1,0 +1,154 @@
+// Frames read back with VTK's reader, the series file, atomic writes, run-directory policy.
+
+#include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/Error.h"
+#include "io/AtomicFile.h"
+#include "io/RunDirectory.h"
+#include "io/VtpSeriesWriter.h"
+#include "scene/SceneBuilder.h"
+#include "simulation/Simulation.h"
+#include "support/TestSupport.h"
+
+namespace fs = std::filesystem;
+
+namespace wcmps {
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+vtkSmartPointer<vtkPolyData> read_frame(const fs::path& p) {
+  vtkNew<vtkXMLPolyDataReader> r;
+  r->SetFileName(p.c_str());
+  r->Update();
+  return r->GetOutput();
+}
+
+TEST(VtpSeriesWriter, FramesReadBackWithEveryFieldAndTheirTimes) {
+  // The hydrostatic case has 4532 particles: frames of ~100 kB, far beyond the few kB at which
+  // ParaView 5.11's reader fails on appended data with Debian 12's Expat (see the writer).
+  CaseSpec spec = test::load_case("cases/hydrostatic/case.toml");
+  Simulation sim(spec, build_scene(spec));
+  const auto dir = test::scratch_dir("series");
+  VtpSeriesWriter writer(dir, spec);
+  writer.write_frame(sim);
+  sim.step(1.0);
+  sim.step(1.0);
+  writer.write_frame(sim);
+  writer.write_frame(sim);  // same step again: ignored
+  ASSERT_EQ(writer.entries().size(), 2u);
+
+  const auto pd = read_frame(dir / writer.entries()[1].file);
+  ASSERT_EQ(pd->GetNumberOfPoints(), sim.particles().size());
+  EXPECT_EQ(pd->GetNumberOfVerts(), sim.particles().size());
+  for (const auto& f : kFields) {
+    vtkDataArray* a = pd->GetPointData()->GetArray(std::string(f.name).c_str());
+    ASSERT_NE(a, nullptr) << f.name;
+    EXPECT_EQ(a->GetNumberOfComponents(), f.components) << f.name;
+  }
+  vtkFieldData* fd = pd->GetFieldData();
+  EXPECT_DOUBLE_EQ(fd->GetArray("TimeValue")->GetTuple1(0), sim.time());
+  EXPECT_DOUBLE_EQ(fd->GetArray("DL")->GetTuple1(0), 0.01);
+  EXPECT_DOUBLE_EQ(fd->GetArray("re")->GetTuple1(0), 0.035);
+  EXPECT_NEAR(fd->GetArray("n0")->GetTuple1(0), 3.04303, 1e-5);
+  EXPECT_GT(fd->GetArray("c0")->GetTuple1(0), 30.0);
+  auto* name = vtkStringArray::SafeDownCast(fd->GetAbstractArray("CaseName"));
+  ASSERT_NE(name, nullptr);
+  EXPECT_EQ(name->GetValue(0), "hydrostatic");
+  // Velocity is (u, v, 0) of the particle with the same id.
+  vtkDataArray* vel = pd->GetPointData()->GetArray("velocity");
+  vtkDataArray* ids = pd->GetPointData()->GetArray("id");
+  const ParticleSet& ps = sim.particles();
+  for (vtkIdType k = 0; k < pd->GetNumberOfPoints(); k += 97) {
+    const auto i = static_cast<std::int64_t>(k);  // all kinds written: same order
+    EXPECT_EQ(static_cast<int>(ids->GetTuple1(k)), ps.id[i]);
+    EXPECT_FLOAT_EQ(static_cast<float>(vel->GetComponent(k, 0)), static_cast<float>(ps.now.u[i]));
+    EXPECT_EQ(vel->GetComponent(k, 2), 0.0);
+  }
+
+  const std::string pvd = read_text(dir / "series.pvd");
+  const std::regex entry(
+      "<DataSet timestep=\"([^\"]+)\" group=\"\" part=\"0\" file=\"([^\"]+)\"/>");
+  std::vector<std::pair<double, std::string>> found;
+  for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), entry); it != std::sregex_iterator();
+       ++it) {
+    found.emplace_back(std::stod((*it)[1]), (*it)[2]);
+  }
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].first, 0.0);
+  EXPECT_EQ(found[1].first, sim.time());  // written exactly (shortest round-trip decimal)
+  EXPECT_EQ(found[1].second, "frame_000001.vtp");
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << "left over: " << e.path();
+  }
+}
+
+TEST(VtpSeriesWriter, WritesOnlyTheFieldsAndParticleKindsAskedFor) {
+  CaseSpec spec = test::load_case("cases/hydrostatic/case.toml");
+  spec.output_fields = {FieldId::Pressure};
+  spec.output_kinds = {ParticleKind::Fluid};
+  spec.output_double_precision = true;
+  const Simulation sim(spec, build_scene(spec));
+  const auto dir = test::scratch_dir("subset");
+  VtpSeriesWriter writer(dir, spec);
+  writer.write_frame(sim);
+  const auto pd = read_frame(dir / "frame_000000.vtp");
+  EXPECT_EQ(pd->GetNumberOfPoints(), sim.particles().fluid_count());
+  EXPECT_EQ(pd->GetPointData()->GetNumberOfArrays(), 1);
+  ASSERT_NE(pd->GetPointData()->GetArray("pressure"), nullptr);
+  EXPECT_EQ(pd->GetPointData()->GetArray("pressure")->GetDataType(), VTK_DOUBLE);
+  EXPECT_EQ(pd->GetPoints()->GetDataType(), VTK_DOUBLE);
+}
+
+TEST(AtomicFile, ReplacesContentAndLeavesNoTemporary) {
+  const auto dir = test::scratch_dir("atomic");
+  write_file_atomically(dir / "a.txt", "first");
+  write_file_atomically(dir / "a.txt", "second");
+  EXPECT_EQ(read_text(dir / "a.txt"), "second");
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
+  EXPECT_EQ(files, 1);
+  EXPECT_THROW(write_file_atomically(dir / "missing" / "a.txt", "x"), IoError);
+}
+
+TEST(RunDirectory, NewEarlierAndForeignDirectories) {
+  const auto root = test::scratch_dir("rundir");
+  const auto dir = root / "run";
+  prepare_run_directory(dir, false);  // created
+  EXPECT_TRUE(fs::is_directory(dir));
+  write_file_atomically(dir / "series.pvd", "x");
+  write_file_atomically(dir / "frame_000000.vtp", "x");
+  EXPECT_THROW(prepare_run_directory(dir, false), IoError);  // an earlier run
+  prepare_run_directory(dir, true);                          // replaced
+  EXPECT_FALSE(fs::exists(dir / "series.pvd"));
+  EXPECT_FALSE(fs::exists(dir / "frame_000000.vtp"));
+  write_file_atomically(dir / "notes.txt", "mine");
+  try {
+    prepare_run_directory(dir, true);  // never deletes what a run did not write
+    FAIL() << "accepted a directory with a foreign file";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("notes.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  // A path through a regular file cannot become a directory.
+  EXPECT_THROW(prepare_run_directory(dir / "notes.txt" / "sub", false), IoError);
+}
+
+}  // namespace
+}  // namespace wcmps

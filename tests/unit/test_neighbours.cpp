@@ -1,0 +1,111 @@
+// The cell-grid neighbour search equals brute force exactly (sorted id lists).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "neighbours/CellGrid.h"
+#include "neighbours/NeighbourList.h"
+
+namespace wcmps {
+namespace {
+
+std::vector<std::vector<std::int32_t>> brute_force(const std::vector<double>& x,
+                                                   const std::vector<double>& y, double cutoff) {
+  const auto n = x.size();
+  std::vector<std::vector<std::int32_t>> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      const double dx = x[j] - x[i], dy = y[j] - y[i];
+      if (i != j && dx * dx + dy * dy < cutoff * cutoff)
+        out[i].push_back(static_cast<std::int32_t>(j));
+    }
+  }
+  return out;
+}
+
+void expect_equal_to_brute_force(const std::vector<double>& x, const std::vector<double>& y,
+                                 Vec2 lo, Vec2 hi, double cutoff, double cell,
+                                 const std::vector<IndexRange>& owners) {
+  const auto n = static_cast<std::int64_t>(x.size());
+  CellGrid grid;
+  grid.configure(lo, hi, cell);
+  grid.bin(x.data(), y.data(), n);
+  NeighbourList list;
+  list.build(grid, x.data(), y.data(), n, cutoff, owners);
+  const auto ref = brute_force(x, y, cutoff);
+  std::int64_t total = 0;
+  for (std::int64_t i = 0; i < n; ++i) {
+    bool owned = false;
+    for (const auto& [b, e] : owners) owned = owned || (i >= b && i < e);
+    std::vector<std::int32_t> got(list.of(i).begin(), list.of(i).end());
+    std::sort(got.begin(), got.end());
+    if (owned) {
+      ASSERT_EQ(got, ref[i]) << "particle " << i;
+      total += static_cast<std::int64_t>(got.size());
+    } else {
+      ASSERT_TRUE(got.empty()) << "particle " << i << " has no list of its own";
+    }
+  }
+  EXPECT_EQ(list.pair_count(), total);
+}
+
+TEST(NeighbourList, RandomParticlesMatchBruteForce) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> ux(0.0, 1.0), uy(0.0, 0.6);
+  std::vector<double> x(3000), y(3000);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    x[k] = ux(rng);
+    y[k] = uy(rng);
+  }
+  // Cells both exactly the cutoff and larger than it.
+  expect_equal_to_brute_force(x, y, {0, 0}, {1, 0.6}, 0.035, 0.035, {{0, 3000}});
+  expect_equal_to_brute_force(x, y, {0, 0}, {1, 0.6}, 0.035, 0.05, {{0, 3000}});
+}
+
+TEST(NeighbourList, LatticeWithDistancesOnTheCutoffMatchesBruteForce) {
+  // On a lattice of spacing 1 with cutoff 3 many pairs sit exactly at the cutoff: they must be
+  // excluded (r < cutoff), as brute force does.
+  std::vector<double> x, y;
+  for (int j = 0; j < 30; ++j) {
+    for (int i = 0; i < 40; ++i) {
+      x.push_back(i * 1.0);
+      y.push_back(j * 1.0);
+    }
+  }
+  expect_equal_to_brute_force(x, y, {-1, -1}, {41, 31}, 3.0, 3.0, {{0, 1200}});
+}
+
+TEST(NeighbourList, OnlyOwnersGetListsButEveryParticleIsACandidate) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 0.3);
+  std::vector<double> x(800), y(800);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    x[k] = u(rng);
+    y[k] = u(rng);
+  }
+  expect_equal_to_brute_force(x, y, {0, 0}, {0.3, 0.3}, 0.02, 0.021, {{0, 100}, {500, 800}});
+}
+
+TEST(NeighbourList, ParticlesOutsideTheGridAreBinnedAtItsEdge) {
+  // Two particles just outside the box, close to each other and to one inside.
+  std::vector<double> x{-0.001, -0.002, 0.001}, y{0.5, 0.501, 0.5};
+  expect_equal_to_brute_force(x, y, {0, 0}, {1, 1}, 0.01, 0.01, {{0, 3}});
+}
+
+TEST(CellGrid, BinsEveryParticleOnceInCellOrder) {
+  std::vector<double> x{0.05, 0.15, 0.05, 0.95}, y{0.05, 0.05, 0.95, 0.95};
+  CellGrid g;
+  g.configure({0, 0}, {1, 1}, 0.1);
+  EXPECT_EQ(g.nx(), 10);
+  EXPECT_EQ(g.ny(), 10);
+  g.bin(x.data(), y.data(), 4);
+  EXPECT_EQ(g.members(), (std::vector<std::int32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(g.cell_end(0, 0) - g.cell_begin(0, 0), 1);
+  EXPECT_EQ(*g.cell_begin(9, 9), 3);
+}
+
+}  // namespace
+}  // namespace wcmps

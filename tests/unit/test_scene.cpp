@@ -1,0 +1,148 @@
+// Scene building: wall rows parallel to the surface and DL apart, ghost rows with their wall
+// sources along the normal, the lattice fill of fluid shapes, the hydrostatic start.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "scene/CaseParser.h"
+#include "scene/SceneBuilder.h"
+#include "simulation/Simulation.h"
+#include "support/TestSupport.h"
+
+namespace wcmps {
+namespace {
+
+// Positions are built by adding multiples of DL = 0.01 m: rounding is ~1e-17 m.
+constexpr double kExact = 1e-12;
+
+TEST(SceneBuilder, TankWallRowIsDlApartAndInLineWithTheFluidRows) {
+  const CaseSpec spec = parse_case_text(test::minimal_case_text(), "mini.toml");
+  const Scene scene = build_scene(spec);
+  const ParticleSet& ps = scene.particles;
+  // Left: 21 (y = -0.005 ... 0.195), bottom: 21 (x = 0.005 ... 0.205), right: 20.
+  EXPECT_EQ(ps.wall_count(), 62);
+  EXPECT_EQ(scene.ghost_layers, 3);  // k DL < 3.5 DL for k = 1, 2, 3
+  EXPECT_EQ(ps.fluid_count(), 20 * 10);
+  EXPECT_EQ(scene.trimmed_fluid, 0);
+  for (std::int64_t i = 0; i < ps.wall_end(); ++i) {
+    const double x = ps.now.x[i], y = ps.now.y[i];
+    const bool on_row = std::abs(x + 0.005) < kExact || std::abs(x - 0.205) < kExact ||
+                        std::abs(y + 0.005) < kExact;
+    EXPECT_TRUE(on_row) << "wall particle at (" << x << ", " << y << ")";
+    // In line with the fluid lattice: coordinates are odd multiples of DL/2.
+    EXPECT_NEAR(std::remainder(y - 0.005, 0.01), 0.0, kExact);
+  }
+  // The fluid is DL away from the wall row.
+  double closest = 1.0;
+  for (std::int64_t f = ps.fluid_begin(); f < ps.size(); ++f) {
+    for (std::int64_t w = 0; w < ps.wall_end(); ++w) {
+      closest = std::min(closest, std::hypot(ps.now.x[f] - ps.now.x[w], ps.now.y[f] - ps.now.y[w]));
+    }
+  }
+  EXPECT_NEAR(closest, 0.01, kExact);
+}
+
+TEST(SceneBuilder, GhostsCopyTheWallParticleAlongTheWallNormal) {
+  CaseSpec spec = parse_case_text(test::minimal_case_text(), "mini.toml");
+  spec.hydrostatic_start = false;
+  const Scene scene = build_scene(spec);
+  const ParticleSet& ps = scene.particles;
+  std::set<std::pair<long, long>> seen;
+  for (std::int64_t g = ps.wall_end(); g < ps.fluid_begin(); ++g) {
+    const double gx = ps.now.x[g], gy = ps.now.y[g];
+    const std::int32_t w = ps.ghost_source(g);
+    const double wx = ps.now.x[w], wy = ps.now.y[w];
+    EXPECT_TRUE(seen.insert({std::lround(gx * 1e4), std::lround(gy * 1e4)}).second)
+        << "two ghosts at (" << gx << ", " << gy << ")";
+    // Left wall: the source is level with the ghost; bottom: straight above; right: level.
+    if (gy > 0.0 && gx < 0.0) {
+      EXPECT_NEAR(wy, gy, kExact);
+      EXPECT_NEAR(wx, -0.005, kExact);
+    } else if (gy > 0.0 && gx > 0.2) {
+      EXPECT_NEAR(wy, gy, kExact);
+      EXPECT_NEAR(wx, 0.205, kExact);
+    } else if (gx > 0.0 && gx < 0.2) {
+      EXPECT_NEAR(wx, gx, kExact);
+      EXPECT_NEAR(wy, -0.005, kExact);
+    } else {  // corner squares: the corner wall particle
+      EXPECT_NEAR(wy, -0.005, kExact);
+      EXPECT_NEAR(std::abs(wx - 0.1), 0.105, kExact);
+    }
+  }
+  // Row k (k DL behind the wall row) has 21 + k left, 21 + 2k bottom and 20 + k right
+  // particles: 62 + 4k, so 66 + 70 + 74 ghosts, filling the band without gaps.
+  EXPECT_EQ(ps.ghost_count(), 210);
+}
+
+TEST(SceneBuilder, FluidUnderAnInclinedWallKeepsHalfASpacingFromIt) {
+  // A 40-degree bed: fluid fills the triangle above it; lattice points within DL/2 of the bed
+  // are dropped, so that every fluid particle is at least DL from the wall row.
+  const double t = std::tan(40.0 * M_PI / 180.0);
+  const std::string text = R"([case]
+name = "slope"
+[particles]
+spacing = 0.01
+[time]
+end = 0.01
+[[wall]]
+polyline = [[0.0, 0.3], [0.0, 0.0], [)" +
+                           std::to_string(0.3 / t) +
+                           R"(, 0.3]]
+solid = "right"
+[[fluid]]
+polygon = [[0.0, 0.0], [)" +
+                           std::to_string(0.25 / t) +
+                           R"(, 0.25], [0.0, 0.25]]
+)";
+  // Down the vertical wall, then up the bed: the solid is on the right all along.
+  const CaseSpec spec = parse_case_text(text, "slope.toml");
+  const Scene scene = build_scene(spec);
+  const ParticleSet& ps = scene.particles;
+  EXPECT_GT(scene.trimmed_fluid, 0);
+  const Vec2 a = spec.walls[0].points[1], b = spec.walls[0].points[2];  // the bed as parsed
+  double closest_surface = 1.0, closest_row = 1.0;
+  for (std::int64_t f = ps.fluid_begin(); f < ps.size(); ++f) {
+    const Vec2 p{ps.now.x[f], ps.now.y[f]};
+    closest_surface = std::min(closest_surface, distance_to_segment(p, a, b));
+    for (std::int64_t w = 0; w < ps.wall_end(); ++w) {
+      closest_row = std::min(closest_row, std::hypot(p.x - ps.now.x[w], p.y - ps.now.y[w]));
+    }
+  }
+  EXPECT_GE(closest_surface, 0.005 * (1 - 1e-6));
+  EXPECT_GE(closest_row, 0.01 * (1 - 1e-4));
+  // Wall particles along the bed lie on a line parallel to it, DL/2 below: no staircase.
+  const Vec2 d = (b - a) * (1.0 / norm(b - a));
+  int on_bed_row = 0;
+  for (std::int64_t w = 0; w < ps.wall_end(); ++w) {
+    const Vec2 p{ps.now.x[w], ps.now.y[w]};
+    if (p.x > 0.02 && p.y > 0.02) {
+      EXPECT_NEAR(cross(d, p - a), -0.005, 1e-9) << "wall particle off the bed row";
+      ++on_bed_row;
+    }
+  }
+  EXPECT_GT(on_bed_row, 20);
+}
+
+TEST(SceneBuilder, HydrostaticStartGivesRhoGDepthInTheInterior) {
+  const CaseSpec spec = test::load_case("cases/hydrostatic/case.toml");
+  const Simulation sim(spec, build_scene(spec));
+  const ParticleSet& ps = sim.particles();
+  const double H = 0.7, rho_g = spec.density * 9.81;
+  int checked = 0;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    const double x = ps.now.x[i], y = ps.now.y[i];
+    // Away from walls and from the top rows, whose kernels reach beyond the fluid.
+    if (x < 0.04 || x > 0.46 || y < 0.04 || y > H - 0.05) continue;
+    // Rows are placed to 1e-10 of n; what is left is the depth of a row taken at mid-rows and
+    // the surface taken at DL/2 above the top row: well within 0.2 % of rho g H (14 Pa).
+    EXPECT_NEAR(ps.now.p[i], rho_g * (H - y), 0.002 * rho_g * H) << "y = " << y;
+    ++checked;
+  }
+  EXPECT_GT(checked, 2000);
+}
+
+}  // namespace
+}  // namespace wcmps
