@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace wcmps {
 
@@ -35,6 +36,19 @@ double parallel_max(std::int64_t begin, std::int64_t end, F&& f) {
     if (v > m) m = v;
   }
   return m;
+}
+
+/// Both maxima over i in [begin, end) of the pair f(i) = {a, b}; -infinity for an empty range.
+template <class F>
+std::pair<double, double> parallel_max2(std::int64_t begin, std::int64_t end, F&& f) {
+  double ma = -std::numeric_limits<double>::infinity(), mb = ma;
+#pragma omp parallel for schedule(static) reduction(max : ma, mb)
+  for (std::int64_t i = begin; i < end; ++i) {
+    const auto [a, b] = f(i);
+    if (a > ma) ma = a;
+    if (b > mb) mb = b;
+  }
+  return {ma, mb};
 }
 
 /// Sum over i in [begin, end) of the integer f(i).

@@ -47,7 +47,8 @@ nlohmann::json RunSummary::to_json() const {
                       {"particle_steps_per_second", particle_steps_per_second()},
                       {"fluid_particle_steps_per_second", fluid_particle_steps_per_second()},
                       {"neighbour_pairs_visited", pairs_visited},
-                      {"neighbour_pairs_per_second", pairs_per_second()}};
+                      {"neighbour_pairs_per_second", pairs_per_second()},
+                      {"neighbour_list_builds", neighbour_builds}};
   nlohmann::json phases = nlohmann::json::object();
   for (const auto& [name, s] : phase_seconds) phases[name] = s;
   j["performance"]["phase_seconds"] = phases;
@@ -78,7 +79,8 @@ std::string RunSummary::to_text() const {
        stats.output_seconds, threads);
   line("particle-steps/s    %.4g (fluid only %.4g)", particle_steps_per_second(),
        fluid_particle_steps_per_second());
-  line("neighbour pairs/s   %.4g", pairs_per_second());
+  line("neighbour pairs/s   %.4g (lists built %lld times)", pairs_per_second(),
+       static_cast<long long>(neighbour_builds));
   for (const auto& [name, s] : phase_seconds) {
     line("  %-16s  %9.3f s  %5.1f %%", name.c_str(), s,
          stats.wall_seconds > 0 ? 100.0 * s / stats.wall_seconds : 0.0);
@@ -108,6 +110,7 @@ RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats
   r.stats = stats;
   r.threads = thread_count();
   r.pairs_visited = sim.pairs_visited();
+  r.neighbour_builds = sim.neighbour_builds();
   for (int p = 0; p < static_cast<int>(Phase::Count); ++p) {
     r.phase_seconds.emplace_back(std::string(phase_name(static_cast<Phase>(p))),
                                  sim.timer().seconds(static_cast<Phase>(p)));

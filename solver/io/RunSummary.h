@@ -27,6 +27,7 @@ struct RunSummary {
   RunStats stats;
   int threads = 1;
   std::int64_t pairs_visited = 0;
+  std::int64_t neighbour_builds = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;
 
   std::int64_t particles() const { return fluid + wall + ghost; }

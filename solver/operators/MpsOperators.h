@@ -79,19 +79,17 @@ class MpsOperators {
   ///
   /// with C from the lattice so that a linear p gives its exact gradient. Pair terms are
   /// antisymmetric (momentum conserved) and derive from a potential (energy conserved).
-  /// Particles from `n_fixed_below` down (boundary particles) count with n_j = n0.
+  /// `p_over_n2` holds p / n^2 of every particle (boundary particles: p / n0^2).
   Vec2 gradient_variational(std::int64_t i, IdRange nb, const double* x, const double* y,
-                            const double* p, const double* n, std::int64_t n_fixed_below) const {
-    const double ti = p[i] / (n[i] * n[i]);
-    const double t0 = 1.0 / (n0_ * n0_);
+                            const double* p_over_n2) const {
+    const double ti = p_over_n2[i];
     double gx = 0.0, gy = 0.0;
     for (const std::int32_t j : nb) {
       const double dx = x[i] - x[j], dy = y[i] - y[j];
       const double r2 = dx * dx + dy * dy;
       if (r2 >= re2_) continue;
       const double r = std::sqrt(r2);
-      const double tj = j < n_fixed_below ? p[j] * t0 : p[j] / (n[j] * n[j]);
-      const double f = (ti + tj) * w_.derivative(r) / r;
+      const double f = (ti + p_over_n2[j]) * w_.derivative(r) / r;
       gx += f * dx;
       gy += f * dy;
     }

@@ -13,12 +13,16 @@
 
 namespace wcmps {
 
+/// What a scheme's gradient reads besides positions: the pressure p, or p / n^2 (boundary
+/// particles p / n0^2), which the correction phase prepares once per step.
+enum class GradientInput { Pressure, PressureOverNumberDensitySquared };
+
 /// Koshizuka, Nobe & Oka (1998), thesis Eq. 2.19: the MPS gradient with p_i replaced by the
 /// minimum pressure of the neighbourhood. Always repulsive; the study's choice.
 struct PressureGradient_Koshizuka1998Min {
+  static constexpr GradientInput kInput = GradientInput::Pressure;
   static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
-                       const double* y, const double* p, const double* /*n*/,
-                       std::int64_t /*fluid_begin*/) {
+                       const double* y, const double* p) {
     return ops.gradient_neighbourhood_min(i, nb, x, y, p);
   }
 };
@@ -26,9 +30,9 @@ struct PressureGradient_Koshizuka1998Min {
 /// Koshizuka & Oka (1996), thesis Eq. 2.18: the plain MPS gradient with p_i. The study notes
 /// it is unstable (pairs attract where p_j < p_i); offered for comparison.
 struct PressureGradient_Koshizuka1996 {
+  static constexpr GradientInput kInput = GradientInput::Pressure;
   static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
-                       const double* y, const double* p, const double* /*n*/,
-                       std::int64_t /*fluid_begin*/) {
+                       const double* y, const double* p) {
     return ops.gradient(i, nb, x, y, p);
   }
 };
@@ -38,10 +42,10 @@ struct PressureGradient_Koshizuka1996 {
 /// the pressure force is minus the derivative of the fluid's potential energy, so a particle
 /// system at rest cannot gain energy from it, and pair forces cancel.
 struct PressureGradient_Suzuki2007 {
+  static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
   static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
-                       const double* y, const double* p, const double* n,
-                       std::int64_t fluid_begin) {
-    return ops.gradient_variational(i, nb, x, y, p, n, fluid_begin);
+                       const double* y, const double* p_over_n2) {
+    return ops.gradient_variational(i, nb, x, y, p_over_n2);
   }
 };
 

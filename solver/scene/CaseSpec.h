@@ -84,8 +84,9 @@ struct CaseSpec {
   bool output_double_precision = false;
 
   // [neighbours]
-  double neighbour_skin = 0.2;  ///< list cutoff = re + skin x DL
-  int sort_interval = 50;       ///< steps between reorderings of fluid particles by cell
+  double neighbour_skin =
+      0.2;  ///< list cutoff = re + skin x DL; lists kept while particles move < skin/2
+  int sort_interval = 50;  ///< steps between reorderings of fluid particles by cell
 
   // [stability]
   double max_density_ratio = 1.2;  ///< n*/n0 above this stops the run

@@ -11,6 +11,10 @@ namespace {
 
 constexpr int kDimension = 2;
 
+inline double sq(double v) {
+  return v * v;
+}
+
 /// Why a particle fails the stability checks (0 = it does not).
 enum Failure : std::uint8_t {
   kOk = 0,
@@ -68,16 +72,22 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
   list_owners_ = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
   order_.resize(ps.fluid_count());
-  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(),
-                            [&](std::int64_t i) { return std::hypot(ps.now.u[i], ps.now.v[i]); });
+  x_built_.resize(ps.size());
+  y_built_.resize(ps.size());
+  p_over_n2_.resize(ps.size());
+  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    return std::sqrt(sq(ps.now.u[i]) + sq(ps.now.v[i]));
+  });
   if (ps.fluid_count() == 0) max_speed_ = 0.0;
   compute_initial_pressure();
 }
 
 void Simulation::compute_initial_pressure() {
-  // The pressure phases work on `next`, which holds the initial positions too.
+  // The pressure phases work on `next`: give it the initial state (the first build of the
+  // lists has reordered the fluid particles of `now`).
   ParticleSet& ps = scene_.particles;
-  find_neighbours();
+  rebuild_neighbours();
+  ps.next = ps.now;
   compute_number_density();
   compute_pressure();
   ps.now.p = ps.next.p;
@@ -100,11 +110,14 @@ void Simulation::step(double t_stop) {
   }
   if (!(dt > 0.0)) return;
 
-  if (sort_interval_ > 0 && steps_ % sort_interval_ == 0) {
-    timer_.time(Phase::Reorder, [&] { reorder_by_cell(); });
-  }
-  timer_.time(Phase::Neighbours, [&] { find_neighbours(); });
+  timer_.time(Phase::Neighbours, [&] { update_neighbours(dt); });
   timer_.time(Phase::Predict, [&] { predict(dt); });
+  if (2.0 * star_drift_ >= skin_) {
+    // The estimate of update_neighbours() fell short (a sudden acceleration): rebuild at r^n
+    // and predict again. If one step alone moves a particle that far, check_stability stops.
+    timer_.time(Phase::Neighbours, [&] { rebuild_neighbours(); });
+    timer_.time(Phase::Predict, [&] { predict(dt); });
+  }
   timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
   timer_.time(Phase::Pressure, [&] { compute_pressure(); });
   timer_.time(Phase::Correct, [&] { correct(dt); });
@@ -113,6 +126,8 @@ void Simulation::step(double t_stop) {
 
   // The new state passed every check: it becomes the current one.
   scene_.particles.now.swap(scene_.particles.next);
+  max_speed_ = next_max_speed_;
+  drift_ = next_drift_;
   ++steps_;
   last_dt_ = dt;
   if (rule_.mode == TimeStepMode::Fixed) {
@@ -122,36 +137,51 @@ void Simulation::step(double t_stop) {
   }
 }
 
-void Simulation::find_neighbours() {
+void Simulation::update_neighbours(double dt) {
+  // Lists hold every pair within re + skin at the last build. Pairs within re at r* are all in
+  // them while no particle has moved skin/2 from where it was at the build. Estimate this
+  // step's move from the current speed and gravity (predict() measures the actual one).
+  const double move = dt * (1.5 * max_speed_ + dt * norm(gravity_));
+  if (!built_ || 2.0 * (drift_ + move) >= skin_) rebuild_neighbours();
+}
+
+void Simulation::rebuild_neighbours() {
   ParticleSet& ps = scene_.particles;
+  if (sort_interval_ > 0 && (!built_ || steps_ - last_sort_step_ >= sort_interval_)) {
+    timer_.time(Phase::Reorder, [&] { reorder_by_cell(); });
+    last_sort_step_ = steps_;
+  }
   grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
   neighbours_.build(grid_, ps.now.x.data(), ps.now.y.data(), ps.size(), ops_.re() + skin_,
                     list_owners_);
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    x_built_[i] = ps.now.x[i];
+    y_built_[i] = ps.now.y[i];
+  });
+  drift_ = 0.0;
+  built_ = true;
+  ++builds_;
 }
 
 void Simulation::predict(double dt) {
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
-  const bool viscous = viscosity_.nu > 0.0;
-  const bool artificial = artificial_viscosity_.alpha > 0.0;
-  max_predicted_move_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+  const bool viscous = viscosity_.nu > 0.0 || artificial_viscosity_.alpha > 0.0;
+  star_drift_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     Vec2 a = gravity_;
     if (viscous) {
-      a += viscosity_.acceleration(ops_, i, neighbours_.of(i), s.x.data(), s.y.data(), s.u.data(),
-                                   s.v.data());
-    }
-    if (artificial) {
-      a += artificial_viscosity_.acceleration(ops_, i, neighbours_.of(i), s.x.data(), s.y.data(),
-                                              s.u.data(), s.v.data());
+      a += viscous_acceleration(ops_, viscosity_, artificial_viscosity_, i, neighbours_.of(i),
+                                s.x.data(), s.y.data(), s.u.data(), s.v.data());
     }
     t.u[i] = s.u[i] + dt * a.x;
     t.v[i] = s.v[i] + dt * a.y;
     t.x[i] = s.x[i] + dt * t.u[i];
     t.y[i] = s.y[i] + dt * t.v[i];
-    return dt * std::hypot(t.u[i], t.v[i]);
+    return std::sqrt(sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]));
   });
-  pairs_visited_ += (viscous + artificial) * neighbours_.pair_count(ps.fluid_begin(), ps.size());
+  if (ps.fluid_count() == 0) star_drift_ = 0.0;
+  if (viscous) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
 void Simulation::compute_number_density() {
@@ -203,9 +233,16 @@ void Simulation::correct(double dt) {
   const double c = -dt / density_;
   with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
     using Scheme = decltype(scheme);
+    const double* input = t.p.data();
+    if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
+      const double inv_n0_2 = 1.0 / (ops_.n0() * ops_.n0());
+      parallel_for(0, ps.size(), [&](std::int64_t i) {
+        p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2 : t.p[i] / (t.n[i] * t.n[i]);
+      });
+      input = p_over_n2_.data();
+    }
     parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-      const Vec2 g = Scheme::gradient(ops_, i, neighbours_.of(i), t.x.data(), t.y.data(),
-                                      t.p.data(), t.n.data(), ps.fluid_begin());
+      const Vec2 g = Scheme::gradient(ops_, i, neighbours_.of(i), t.x.data(), t.y.data(), input);
       t.u[i] += c * g.x;
       t.v[i] += c * g.y;
     });
@@ -217,12 +254,15 @@ void Simulation::move(double dt) {
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
-  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+  const auto [speed, drift] = parallel_max2(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     t.x[i] = s.x[i] + dt * t.u[i];
     t.y[i] = s.y[i] + dt * t.v[i];
-    return std::hypot(t.u[i], t.v[i]);
+    return std::make_pair(std::sqrt(sq(t.u[i]) + sq(t.v[i])),
+                          std::sqrt(sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i])));
   });
-  if (ps.fluid_count() == 0) max_speed_ = 0.0;
+  // Kept aside until the step is committed: a failed step leaves the state as it was.
+  next_max_speed_ = ps.fluid_count() > 0 ? speed : 0.0;
+  next_drift_ = ps.fluid_count() > 0 ? drift : 0.0;
 }
 
 void Simulation::check_stability(double dt) {
@@ -232,9 +272,11 @@ void Simulation::check_stability(double dt) {
   const Vec2 lo = scene_.domain_lo, hi = scene_.domain_hi;
   const double n_max = max_density_ratio_ * ops_.n0();
   const auto& rows = scene_.wall_rows;
-  // The list was built at r^n with cutoff re + skin: pairs within re at r* are all in it while
-  // no two particles close in by more than the skin, i.e. each moves less than skin / 2.
-  const bool moved_too_far = 2.0 * max_predicted_move_ > skin_;
+  // Even after a fresh build a particle was predicted skin/2 or more from its build position:
+  // it moved that far in this one step, and pairs within re may be missing from the lists.
+  // (r* is not kept; the particles are found by their new positions, which differ from r*
+  // by dt times the pressure correction.)
+  const bool moved_too_far = 2.0 * star_drift_ >= skin_;
   auto failure = [&](std::int64_t i) -> std::uint8_t {
     const double x = t.x[i], y = t.y[i];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(t.u[i]) ||
@@ -247,7 +289,9 @@ void Simulation::check_stability(double dt) {
       if (segments_intersect(a, b, r.a, r.b)) return kCrossedWall;
     }
     if (t.n[i] > n_max) return kDensityBlowUp;
-    if (moved_too_far && dt * std::hypot(t.u[i], t.v[i]) > 0.5 * skin_) return kMovedTooFar;
+    if (moved_too_far && 2.0 * std::sqrt(sq(x - x_built_[i]) + sq(y - y_built_[i])) >= skin_) {
+      return kMovedTooFar;
+    }
     return kOk;
   };
   const std::int64_t failed = parallel_count(ps.fluid_begin(), ps.size(),
@@ -273,6 +317,7 @@ void Simulation::check_stability(double dt) {
 }
 
 void Simulation::reorder_by_cell() {
+  // Fluid particles in the order of their cells, so that neighbours sit close in memory.
   ParticleSet& ps = scene_.particles;
   grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
   std::size_t k = 0;

@@ -44,18 +44,21 @@ class Simulation {
   const PhaseTimer& timer() const { return timer_; }
   /// Neighbour entries visited by the operators so far (one per (i, j) per operator pass).
   std::int64_t pairs_visited() const { return pairs_visited_; }
+  /// Times the neighbour lists were built.
+  std::int64_t neighbour_builds() const { return builds_; }
 
  private:
   // The phases of one step, in order.
-  void find_neighbours();           // cell grid + lists at r^n (section 2.3)
-  void predict(double dt);          // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
-  void compute_number_density();    // n* at r* (Eq. 2.17)
-  void compute_pressure();          // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
-  void correct(double dt);          // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19)
-  void move(double dt);             // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
-  void check_stability(double dt);  // NaN, domain, density, walls, displacement
-  void reorder_by_cell();           // cache locality, every sort_interval steps
-  void compute_initial_pressure();  // n and p of the initial state, for its frame
+  void update_neighbours(double dt);  // lists at r^n, rebuilt when particles drift (2.3)
+  void rebuild_neighbours();          // cell grid + lists, reordering now and then
+  void predict(double dt);            // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
+  void compute_number_density();      // n* at r* (Eq. 2.17)
+  void compute_pressure();            // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
+  void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19)
+  void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
+  void check_stability(double dt);    // NaN, domain, density, walls, displacement
+  void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
+  void compute_initial_pressure();    // n and p of the initial state, for its frame
 
   Scene scene_;
   MpsOperators ops_;
@@ -75,14 +78,21 @@ class Simulation {
 
   CellGrid grid_;
   NeighbourList neighbours_;
-  std::vector<IndexRange> list_owners_;  // particles that need neighbour lists
-  std::vector<std::int32_t> order_;      // scratch for reorder_by_cell
+  std::vector<IndexRange> list_owners_;    // particles that need neighbour lists
+  std::vector<std::int32_t> order_;        // scratch for reorder_by_cell
+  std::vector<double> x_built_, y_built_;  // positions at the last build of the lists
+  std::vector<double> p_over_n2_;          // input of the variational gradient
 
   double time_ = 0.0;
   std::int64_t steps_ = 0;
   double last_dt_ = 0.0;
   double max_speed_ = 0.0;
-  double max_predicted_move_ = 0.0;
+  double drift_ = 0.0;                              // max |r^n - r_built| over fluid particles
+  double star_drift_ = 0.0;                         // max |r* - r_built|, from the prediction
+  double next_drift_ = 0.0, next_max_speed_ = 0.0;  // of the step in progress
+  bool built_ = false;
+  std::int64_t builds_ = 0;
+  std::int64_t last_sort_step_ = 0;
   PhaseTimer timer_;
   std::int64_t pairs_visited_ = 0;
 };
