@@ -20,6 +20,7 @@ namespace {
 struct StillWater {
   double max_speed = 0.0;        ///< over the window (m/s)
   double rms_speed = 0.0;        ///< rms over particles, largest over the window (m/s)
+  double peak_rms_speed = 0.0;   ///< largest rms over the whole run (the start-up transient)
   double mean_p_error = 0.0;     ///< mean of p - rho g (H - y) over the window (Pa)
   double rms_p_error = 0.0;      ///< rms of the same over particles and window (Pa)
   double max_compression = 0.0;  ///< max of n/n0 - 1 over the window
@@ -56,6 +57,7 @@ StillWater run_still_water(const CaseSpec& spec, double H, double width, double 
       }
     }
     const double rms = std::sqrt(s2 / static_cast<double>(ps.fluid_count()));
+    r.peak_rms_speed = std::max(r.peak_rms_speed, rms);
     series << t << ',' << rms << ',' << smax << ',' << e1 / ne << ',' << std::sqrt(e2 / ne) << ','
            << nmax << '\n';
     if (t >= spec.end_time - window - 1e-9) {
@@ -84,21 +86,22 @@ StillWater run_still_water(const CaseSpec& spec, double H, double width, double 
 /// - mean pressure error: 1 % of rho g H. The weight of the water fixes the mean pressure; a
 ///   bias beyond 1 % would be a wrong equation of state, wall or gradient.
 /// - rms pressure error: 5 % of rho g H. The Tait equation turns 0.1 % of number-density noise
-///   into ~2 % of rho g H at these c0 (p ~ rho c0^2 dn/n0); particle noise is of that order.
+///   into ~2 % of rho g H at these c0 (p ~ rho c0^2 dn/n0); the rows next to the walls, whose
+///   kernels hold the uncompressed wall lattice, carry most of it.
 /// - compression: at most 1 % (../shared/spec/cases.md: the hydrostatic density error must stay
 ///   <= 1 %; at c0 = 10 sqrt(2 g H) it is 0.5 %).
-/// - spurious speed: rms <= 0.005 sqrt(gH) and max <= 0.03 sqrt(gH). validation.md asks for a
-///   spurious speed well below 0.01 sqrt(gH): the rms is; single particles reorganising the
-///   lattice near walls reach ~0.02 sqrt(gH) with the default artificial viscosity 0.02
-///   (docs/validation.md shows the series).
+/// - spurious speed, after the start-up transient: max <= 0.005 sqrt(gH), rms <= 0.001 sqrt(gH)
+///   (validation.md: well below 0.01 sqrt(gH)); and the transient has decayed to a tenth of
+///   its peak rms, which shows that the still state is stable, not just quiet for a while.
 void expect_still(const StillWater& r, double H) {
   const double rho_g_H = 1000.0 * 9.81 * H;
   const double sqrt_gH = std::sqrt(9.81 * H);
   EXPECT_LE(std::abs(r.mean_p_error), 0.01 * rho_g_H);
   EXPECT_LE(r.rms_p_error, 0.05 * rho_g_H);
   EXPECT_LE(r.max_compression, 0.01);
-  EXPECT_LE(r.rms_speed, 0.005 * sqrt_gH);
-  EXPECT_LE(r.max_speed, 0.03 * sqrt_gH);
+  EXPECT_LE(r.rms_speed, 0.001 * sqrt_gH);
+  EXPECT_LE(r.max_speed, 0.005 * sqrt_gH);
+  EXPECT_LE(r.rms_speed, 0.1 * r.peak_rms_speed);
   EXPECT_TRUE(r.all_inside);
   ::testing::Test::RecordProperty("max_speed_over_sqrt_gH", std::to_string(r.max_speed / sqrt_gH));
   ::testing::Test::RecordProperty("rms_speed_over_sqrt_gH", std::to_string(r.rms_speed / sqrt_gH));
@@ -108,22 +111,23 @@ void expect_still(const StillWater& r, double H) {
                                   std::to_string(r.rms_p_error / rho_g_H));
   std::printf(
       "still water: max speed %.4f m/s (%.4f sqrt(gH)), rms %.4f m/s (%.4f sqrt(gH))\n"
+      "             start-up transient: peak rms %.4f m/s\n"
       "             pressure error mean %+.1f Pa (%+.3f %%), rms %.1f Pa (%.2f %% of rho g H)\n"
       "             max compression %.3f %%\n",
-      r.max_speed, r.max_speed / sqrt_gH, r.rms_speed, r.rms_speed / sqrt_gH, r.mean_p_error,
-      100 * r.mean_p_error / rho_g_H, r.rms_p_error, 100 * r.rms_p_error / rho_g_H,
+      r.max_speed, r.max_speed / sqrt_gH, r.rms_speed, r.rms_speed / sqrt_gH, r.peak_rms_speed,
+      r.mean_p_error, 100 * r.mean_p_error / rho_g_H, r.rms_p_error, 100 * r.rms_p_error / rho_g_H,
       100 * r.max_compression);
 }
 
-TEST(Hydrostatic, FlatTankAtTwoSecondsDl10mm) {
+TEST(Hydrostatic, FlatTankDl10mm) {
   const CaseSpec spec = test::load_case("cases/hydrostatic/case.toml");
   ASSERT_DOUBLE_EQ(spec.dl, 0.01);
-  ASSERT_GE(spec.end_time, 2.0);
+  ASSERT_GE(spec.end_time, 6.5);  // the start-up transient has died out by then
   // Statistics over the last 0.5 s, below the top 3.5 DL (p is clamped at zero there).
   expect_still(run_still_water(spec, 0.7, 0.5, 0.5, 0.035, "dl10mm"), 0.7);
 }
 
-TEST(Hydrostatic, LongFlatTankAtTwoSecondsDl5mm) {
+TEST(Hydrostatic, LongFlatTankDl5mm) {
   CaseSpec spec = test::load_case("cases/hydrostatic/case.toml");
   spec.dl = 0.005;
   expect_still(run_still_water(spec, 0.7, 0.5, 0.5, 0.0175, "dl5mm"), 0.7);
