@@ -86,8 +86,9 @@ StillWater run_still_water(const CaseSpec& spec, double H, double width, double 
 /// - mean pressure error: 1 % of rho g H. The weight of the water fixes the mean pressure; a
 ///   bias beyond 1 % would be a wrong equation of state, wall or gradient.
 /// - rms pressure error: 5 % of rho g H. The Tait equation turns 0.1 % of number-density noise
-///   into ~2 % of rho g H at these c0 (p ~ rho c0^2 dn/n0); the rows next to the walls, whose
-///   kernels hold the uncompressed wall lattice, carry most of it.
+///   into ~2 % of rho g H at these c0 (p ~ rho c0^2 dn/n0); the rows above the bottom, whose
+///   lattice was compressed against the uncompressed wall rows and has rearranged, carry most
+///   of it (docs/validation.md).
 /// - compression: at most 1 % (../shared/spec/cases.md: the hydrostatic density error must stay
 ///   <= 1 %; at c0 = 10 sqrt(2 g H) it is 0.5 %).
 /// - spurious speed, after the start-up transient: max <= 0.005 sqrt(gH), rms <= 0.001 sqrt(gH)
