@@ -15,17 +15,21 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, '..', 'cases', 'hydrostatic', 'case.toml')
 
 # (label, extra [physics] keys, [particles] initial_state)
+NO_COLLISION = {'wall_collision': '"none"'}
 VARIANTS = [
     ('study: Eq. 2.19, EOS walls, lattice start, alpha = 0',
      {'pressure_gradient': '"koshizuka1998-min"', 'wall_pressure': '"eos"',
-      'artificial_viscosity': '0.0'}, 'lattice'),
+      'artificial_viscosity': '0.0', **NO_COLLISION}, 'lattice'),
     ('+ walls extrapolated from the fluid',
-     {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0'}, 'lattice'),
+     {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
+      **NO_COLLISION}, 'lattice'),
     ('+ hydrostatic start',
-     {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0'}, 'hydrostatic'),
+     {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
+      **NO_COLLISION}, 'hydrostatic'),
     ('+ artificial viscosity 0.02',
-     {'pressure_gradient': '"koshizuka1998-min"'}, 'hydrostatic'),
-    ('+ variational gradient (the defaults)', {}, 'hydrostatic'),
+     {'pressure_gradient': '"koshizuka1998-min"', **NO_COLLISION}, 'hydrostatic'),
+    ('+ variational gradient', dict(NO_COLLISION), 'hydrostatic'),
+    ('+ wall collisions (the defaults)', {}, 'hydrostatic'),
     ('defaults without artificial viscosity', {'artificial_viscosity': '0.0'}, 'hydrostatic'),
 ]
 

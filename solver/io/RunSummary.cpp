@@ -41,6 +41,7 @@ nlohmann::json RunSummary::to_json() const {
       {"step_rule", time_step}, {"end", end_time},        {"simulated", stats.simulated_time},
       {"steps", stats.steps},   {"dt_min", stats.dt_min}, {"dt_max", stats.dt_max}};
   j["frames"] = stats.frames;
+  j["wall_collisions"] = wall_collisions;
   j["performance"] = {{"wall_seconds", stats.wall_seconds},
                       {"output_seconds", stats.output_seconds},
                       {"threads", threads},
@@ -75,6 +76,7 @@ std::string RunSummary::to_text() const {
        static_cast<long long>(stats.steps), stats.dt_min, stats.dt_max);
   line("simulated time      %g s of %g s", stats.simulated_time, end_time);
   line("frames              %lld", static_cast<long long>(stats.frames));
+  line("wall collisions     %lld particle-steps", static_cast<long long>(wall_collisions));
   line("wall time           %.3f s (%.3f s writing frames), %d threads", stats.wall_seconds,
        stats.output_seconds, threads);
   line("particle-steps/s    %.4g (fluid only %.4g)", particle_steps_per_second(),
@@ -111,6 +113,7 @@ RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats
   r.threads = thread_count();
   r.pairs_visited = sim.pairs_visited();
   r.neighbour_builds = sim.neighbour_builds();
+  r.wall_collisions = sim.wall_collisions();
   for (int p = 0; p < static_cast<int>(Phase::Count); ++p) {
     r.phase_seconds.emplace_back(std::string(phase_name(static_cast<Phase>(p))),
                                  sim.timer().seconds(static_cast<Phase>(p)));

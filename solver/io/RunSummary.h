@@ -28,6 +28,7 @@ struct RunSummary {
   int threads = 1;
   std::int64_t pairs_visited = 0;
   std::int64_t neighbour_builds = 0;
+  std::int64_t wall_collisions = 0;  ///< fluid particle-steps the wall collision model changed
   std::vector<std::pair<std::string, double>> phase_seconds;
 
   std::int64_t particles() const { return fluid + wall + ghost; }

@@ -332,6 +332,12 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     std::vector<std::string> walls;
     for (const auto& e : kWallPressureSchemes) walls.emplace_back(e.key);
     c.wall_pressure = *wall_pressure_from_key(r.choice("wall_pressure", walls.front(), walls));
+    std::vector<std::string> collisions;
+    for (const auto& e : kWallCollisionSchemes) collisions.emplace_back(e.key);
+    c.wall_collision =
+        *wall_collision_from_key(r.choice("wall_collision", collisions.front(), collisions));
+    c.collision_distance = r.number("collision_distance", 0.8, 0.5, 1.0, true, true);
+    c.collision_restitution = r.number("collision_restitution", 0.2, 0.0, 1.0);
     c.negative_pressure = r.choice("negative_pressure", "zero", {"zero", "keep"}) == "zero"
                               ? NegativePressure::Zero
                               : NegativePressure::Keep;

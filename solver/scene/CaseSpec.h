@@ -15,6 +15,7 @@
 #include "particles/ParticleKind.h"
 #include "physics/PressureGradient.h"
 #include "physics/TimeStep.h"
+#include "physics/WallCollision.h"
 #include "physics/WallPressure.h"
 
 namespace wcmps {
@@ -67,6 +68,9 @@ struct CaseSpec {
   PressureGradientScheme pressure_gradient = PressureGradientScheme::Suzuki2007;
   NegativePressure negative_pressure = NegativePressure::Zero;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
+  WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
+  double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide
+  double collision_restitution = 0.2;  ///< e of a fluid particle striking a boundary
 
   // [time]
   double end_time = 0.0;  ///< s

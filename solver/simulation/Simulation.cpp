@@ -55,6 +55,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       gradient_scheme_(spec.pressure_gradient),
       wall_scheme_(spec.wall_pressure),
       zero_negative_pressure_(spec.negative_pressure == NegativePressure::Zero),
+      collision_scheme_(spec.wall_collision),
+      collision_{spec.collision_distance * spec.dl, spec.collision_restitution},
       gravity_(spec.gravity),
       density_(spec.density),
       skin_(spec.neighbour_skin * spec.dl),
@@ -121,6 +123,7 @@ void Simulation::step(double t_stop) {
   timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
   timer_.time(Phase::Pressure, [&] { compute_pressure(); });
   timer_.time(Phase::Correct, [&] { correct(dt); });
+  timer_.time(Phase::Correct, [&] { collide_with_walls(); });
   timer_.time(Phase::Move, [&] { move(dt); });
   timer_.time(Phase::Check, [&] { check_stability(dt); });
 
@@ -128,6 +131,7 @@ void Simulation::step(double t_stop) {
   scene_.particles.now.swap(scene_.particles.next);
   max_speed_ = next_max_speed_;
   drift_ = next_drift_;
+  wall_collisions_ += next_collisions_;
   ++steps_;
   last_dt_ = dt;
   if (rule_.mode == TimeStepMode::Fixed) {
@@ -246,6 +250,17 @@ void Simulation::correct(double dt) {
       t.u[i] += c * g.x;
       t.v[i] += c * g.y;
     });
+  });
+  pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
+}
+
+void Simulation::collide_with_walls() {
+  if (collision_scheme_ == WallCollisionScheme::None) return;
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  next_collisions_ = parallel_count(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    return collision_.apply(i, neighbours_.of(i), t.x.data(), t.y.data(), t.u.data(), t.v.data(),
+                            ps.kind.data()) > 0;
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }

@@ -13,6 +13,7 @@
 #include "physics/PressureGradient.h"
 #include "physics/TimeStep.h"
 #include "physics/Viscosity.h"
+#include "physics/WallCollision.h"
 #include "physics/WallPressure.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
@@ -44,6 +45,8 @@ class Simulation {
   const PhaseTimer& timer() const { return timer_; }
   /// Neighbour entries visited by the operators so far (one per (i, j) per operator pass).
   std::int64_t pairs_visited() const { return pairs_visited_; }
+  /// Fluid particle-steps whose velocity the wall collision model changed.
+  std::int64_t wall_collisions() const { return wall_collisions_; }
   /// Times the neighbour lists were built.
   std::int64_t neighbour_builds() const { return builds_; }
 
@@ -55,6 +58,7 @@ class Simulation {
   void compute_number_density();      // n* at r* (Eq. 2.17)
   void compute_pressure();            // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
   void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19)
+  void collide_with_walls();          // splash particles kept out of walls (Koshizuka 1998)
   void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
@@ -69,6 +73,8 @@ class Simulation {
   PressureGradientScheme gradient_scheme_;
   WallPressureScheme wall_scheme_;
   bool zero_negative_pressure_;
+  WallCollisionScheme collision_scheme_;
+  WallCollision_Koshizuka1998 collision_;
   TimeStepRule rule_;
   Vec2 gravity_;
   double density_;
@@ -95,6 +101,7 @@ class Simulation {
   std::int64_t last_sort_step_ = 0;
   PhaseTimer timer_;
   std::int64_t pairs_visited_ = 0;
+  std::int64_t wall_collisions_ = 0, next_collisions_ = 0;
 };
 
 }  // namespace wcmps

@@ -163,6 +163,7 @@ TEST(Stability, AParticleThroughAWallIsReported) {
   spec.hydrostatic_start = false;
   spec.fluids[0].polygon = {{0.1, 0.0}, {0.11, 0.0}, {0.11, 0.01}, {0.1, 0.01}};
   spec.fluids[0].velocity = {0.0, -200.0};
+  spec.wall_collision = WallCollisionScheme::None;  // it would turn the particle back
   Simulation sim(spec, build_scene(spec));
   try {
     sim.step(1.0);
@@ -170,6 +171,49 @@ TEST(Stability, AParticleThroughAWallIsReported) {
   } catch (const InstabilityError& e) {
     EXPECT_EQ(e.report().reason, "crossed a wall");
     EXPECT_EQ(e.report().step, 1);
+  }
+}
+
+/// A lone particle thrown at the bottom at 2 m/s, with nothing else acting on it: no gravity,
+/// no viscosity, and zero pressure (it is on the free surface, and walls extrapolate zero from
+/// it). Only the wall collision model can stop it.
+CaseSpec lone_particle_at_the_bottom() {
+  CaseSpec spec = minimal();
+  spec.gravity = {0.0, 0.0};
+  spec.sound_speed = 20.0;
+  spec.kinematic_viscosity = 0.0;
+  spec.artificial_viscosity = 0.0;
+  spec.hydrostatic_start = false;
+  spec.fluids[0].polygon = {{0.1, 0.05}, {0.11, 0.05}, {0.11, 0.06}, {0.1, 0.06}};
+  spec.fluids[0].velocity = {0.0, -2.0};
+  return spec;
+}
+
+TEST(WallCollision, TurnsALoneParticleBackWithTheRestitution) {
+  const CaseSpec spec = lone_particle_at_the_bottom();
+  Simulation sim(spec, build_scene(spec));
+  while (sim.time() < 0.05) sim.step(0.05);  // it meets the wall at about t = 0.026 s
+  const ParticleSet& ps = sim.particles();
+  ASSERT_EQ(ps.fluid_count(), 1);
+  const std::int64_t i = ps.fluid_begin();
+  // It sits right above a wall particle, so one head-on collision: v = -e (-2 m/s), u = 0
+  // (to rounding: the collision is the only change of velocity in the run).
+  EXPECT_EQ(sim.wall_collisions(), 1);
+  EXPECT_NEAR(ps.now.v[i], spec.collision_restitution * 2.0, 1e-12);
+  EXPECT_NEAR(ps.now.u[i], 0.0, 1e-12);
+  // It turned within the collision distance of the wall row (y = -DL/2), above the row.
+  EXPECT_GT(ps.now.y[i], -0.5 * spec.dl);
+}
+
+TEST(WallCollision, WithoutItTheLoneParticleGoesThroughTheWall) {
+  CaseSpec spec = lone_particle_at_the_bottom();
+  spec.wall_collision = WallCollisionScheme::None;
+  Simulation sim(spec, build_scene(spec));
+  try {
+    while (sim.time() < 0.05) sim.step(0.05);
+    FAIL() << "the particle stayed in";
+  } catch (const InstabilityError& e) {
+    EXPECT_EQ(e.report().reason, "crossed a wall");
   }
 }
 
