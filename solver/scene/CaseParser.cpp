@@ -282,6 +282,37 @@ WallSpec read_wall(TableReader& r) {
   return w;
 }
 
+/// [tank]: a beach tank, expanded into its wall (bed, bottom, far wall) and its water.
+void read_tank(TableReader& r, CaseSpec& c) {
+  TankSpec t;
+  t.where = r.where();
+  t.slope_deg = r.number("slope", std::nullopt, 0.0, 90.0, true, true);
+  t.depth = r.number("depth", std::nullopt, 0.0, kInf, true);
+  t.length = r.number("length", std::nullopt, 0.0, kInf, true);
+  t.freeboard = r.number("freeboard", 0.1, 0.0, kInf, true);
+  const double tan_a = std::tan(t.slope_deg * std::acos(-1.0) / 180.0);
+  const double toe = t.depth / tan_a;  // where the bed meets the bottom
+  if (!(t.length > toe)) {
+    r.fail(*r.table().get("length"), "length",
+           "the bed reaches the bottom " + fmt(toe) + " m from the shoreline, at or beyond the " +
+               "far wall: make the tank longer or the slope steeper");
+  }
+  r.finish();
+  WallSpec wall;
+  wall.points = {{-t.freeboard / tan_a, t.freeboard},
+                 {toe, -t.depth},
+                 {t.length, -t.depth},
+                 {t.length, t.freeboard}};
+  wall.solid_on_right = true;  // going down the bed, the ground is on the right
+  wall.where = t.where;
+  c.walls.push_back(wall);
+  FluidRegionSpec water;
+  water.polygon = {{0.0, 0.0}, {toe, -t.depth}, {t.length, -t.depth}, {t.length, 0.0}};
+  water.where = t.where;
+  c.fluids.push_back(water);
+  c.tank = t;
+}
+
 }  // namespace
 
 CaseSpec parse_case_text(std::string_view text, const std::string& path) {
@@ -313,6 +344,8 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.wall_clearance = r.number("wall_clearance", 0.5, 0.0, 1.0);
     c.hydrostatic_start =
         r.choice("initial_state", "hydrostatic", {"hydrostatic", "lattice"}) == "hydrostatic";
+    c.settle_time = r.number("settle_time", 0.0, 0.0, kInf);
+    c.settle_damping = r.number("settle_damping", 0.1, 0.0, kInf, true);
     r.finish();
   }
   {
@@ -436,12 +469,17 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
       read(r);
     }
   };
+  if (const toml::node* n = root.get("tank")) {
+    if (!n->is_table()) root.fail(*n, "tank", "expected a table [tank]");
+    TableReader r(*n->as_table(), "[tank]", path);
+    read_tank(r, c);
+  }
   tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
   tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });
   root.finish();
 
-  if (c.fluids.empty()) throw CaseError(c.file, "the case has no [[fluid]] region");
-  if (c.walls.empty()) throw CaseError(c.file, "the case has no [[wall]]");
+  if (c.fluids.empty()) throw CaseError(c.file, "the case has no [[fluid]] region or [tank]");
+  if (c.walls.empty()) throw CaseError(c.file, "the case has no [[wall]] or [tank]");
   return c;
 }
 

@@ -37,6 +37,18 @@ struct WallSpec {
   SourceLocation where;
 };
 
+/// A tank with a sloping bed (a beach): the bed runs from above the shoreline down to a flat
+/// bottom, which runs to a vertical far wall. Coordinates: origin at the shoreline on the
+/// still-water line, x towards the far wall, y up. The builder turns it into one wall (bed,
+/// bottom, far wall) and one fluid region (the water below y = 0).
+struct TankSpec {
+  double slope_deg = 0.0;  ///< angle of the bed with the horizontal (degrees)
+  double depth = 0.0;      ///< still-water depth over the flat bottom (m)
+  double length = 0.0;     ///< shoreline to far wall along the still-water line (m)
+  double freeboard = 0.0;  ///< height of bed and far wall above still water (m)
+  SourceLocation where;
+};
+
 enum class NegativePressure { Zero, Keep };
 
 struct CaseSpec {
@@ -55,6 +67,9 @@ struct CaseSpec {
   /// depth) instead of on the uncompressed lattice, where p = 0 everywhere and the column first
   /// falls onto itself.
   bool hydrostatic_start = true;
+  /// Settling before t = 0 (s of damped motion; 0 = none), and its damping time (s).
+  double settle_time = 0.0;
+  double settle_damping = 0.1;
 
   // [physics]
   double density = 1000.0;              ///< rho0 (kg/m^3)
@@ -96,6 +111,7 @@ struct CaseSpec {
   double max_density_ratio = 1.2;  ///< n*/n0 above this stops the run
   std::optional<std::pair<Vec2, Vec2>> domain;
 
+  std::optional<TankSpec> tank;  ///< already expanded into walls and fluids
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 

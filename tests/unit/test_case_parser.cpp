@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -177,6 +178,57 @@ TEST(SceneGeometry, ACornerTooSharpForTheWallRowsIsRejected) {
 TEST(SceneGeometry, GravityFreeCaseNeedsASoundSpeed) {
   expect_error(test::minimal_case_text() + "\n[physics]\ngravity = [0.0, 0.0]\n", 0,
                "sound_speed is required when gravity is zero");
+}
+
+const char* kTank = R"([case]
+name = "beach"
+
+[particles]
+spacing = 0.01
+
+[time]
+end = 0.01
+
+[tank]
+slope = 40.0
+depth = 0.3
+length = 0.6
+)";
+
+TEST(CaseParser, TankBecomesItsBedWallAndItsWater) {
+  const CaseSpec c = parse_case_text(kTank, "beach.toml");
+  ASSERT_TRUE(c.tank);
+  EXPECT_DOUBLE_EQ(c.tank->freeboard, 0.1);  // the documented default
+  ASSERT_EQ(c.walls.size(), 1u);
+  ASSERT_EQ(c.fluids.size(), 1u);
+  const double toe = 0.3 / std::tan(40.0 * std::acos(-1.0) / 180.0);
+  const auto& w = c.walls[0].points;
+  ASSERT_EQ(w.size(), 4u);
+  EXPECT_NEAR(w[0].x, -0.1 / std::tan(40.0 * std::acos(-1.0) / 180.0), 1e-12);
+  EXPECT_NEAR(w[0].y, 0.1, 1e-12);
+  EXPECT_NEAR(w[1].x, toe, 1e-12);
+  EXPECT_NEAR(w[1].y, -0.3, 1e-12);
+  EXPECT_NEAR(w[3].x, 0.6, 1e-12);
+  EXPECT_TRUE(c.walls[0].solid_on_right);
+  // The water: below y = 0, above the bed; the scene builds without complaint.
+  const Scene scene = build_scene(c);
+  const ParticleSet& ps = scene.particles;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    EXPECT_LT(ps.now.y[i], 0.0);
+    EXPECT_GT(ps.now.y[i], -0.3);
+    // Above the bed line y = -x tan(40 deg), by at least the wall clearance (DL/2).
+    const double a = 40.0 * std::acos(-1.0) / 180.0;
+    EXPECT_GT(ps.now.x[i] * std::sin(a) + ps.now.y[i] * std::cos(a), 0.005 - 1e-9);
+  }
+}
+
+TEST(CaseParser, TankErrorsAreNamed) {
+  expect_error(replace(kTank, "slope = 40.0", "slope = 90.0"), 11, "[tank] slope");
+  expect_error(replace(kTank, "length = 0.6", "length = 0.3"), 13, "the bed reaches the bottom");
+  expect_error(replace(kTank, "length = 0.6", "length = 0.6\nlenght = 0.7"), 14,
+               "unknown key 'lenght' in [tank]");
+  expect_error(replace(kTank, "[particles]", "[particles]\nsettle_damping = 0.0"), 5,
+               "settle_damping");
 }
 
 }  // namespace
