@@ -37,13 +37,19 @@ nlohmann::json RunSummary::to_json() const {
   }
   j["particles"] = {{"fluid", fluid}, {"wall", wall}, {"ghost", ghost}, {"total", particles()}};
   j["method"] = {{"DL", dl}, {"re", re}, {"n0", n0}, {"lambda", lambda}, {"c0", c0}};
-  j["time"] = {
-      {"step_rule", time_step}, {"end", end_time},        {"simulated", stats.simulated_time},
-      {"steps", stats.steps},   {"dt_min", stats.dt_min}, {"dt_max", stats.dt_max}};
+  j["time"] = {{"step_rule", time_step},
+               {"end", end_time},
+               {"simulated", stats.simulated_time},
+               {"steps", stats.steps},
+               {"dt_min", stats.dt_min},
+               {"dt_max", stats.dt_max},
+               {"settle_time", settle_time},
+               {"settle_steps", settle_steps}};
   j["frames"] = stats.frames;
   j["wall_collisions"] = wall_collisions;
   j["performance"] = {{"wall_seconds", stats.wall_seconds},
                       {"output_seconds", stats.output_seconds},
+                      {"settle_seconds", stats.settle_seconds},
                       {"threads", threads},
                       {"particle_steps_per_second", particle_steps_per_second()},
                       {"fluid_particle_steps_per_second", fluid_particle_steps_per_second()},
@@ -75,6 +81,10 @@ std::string RunSummary::to_text() const {
   line("time step           %s, %lld steps, dt %.4g ... %.4g s", time_step.c_str(),
        static_cast<long long>(stats.steps), stats.dt_min, stats.dt_max);
   line("simulated time      %g s of %g s", stats.simulated_time, end_time);
+  if (settle_steps > 0) {
+    line("settling            %g s before t = 0, %lld steps, %.3f s wall time", settle_time,
+         static_cast<long long>(settle_steps), stats.settle_seconds);
+  }
   line("frames              %lld", static_cast<long long>(stats.frames));
   line("wall collisions     %lld particle-steps", static_cast<long long>(wall_collisions));
   line("wall time           %.3f s (%.3f s writing frames), %d threads", stats.wall_seconds,
@@ -114,6 +124,8 @@ RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats
   r.pairs_visited = sim.pairs_visited();
   r.neighbour_builds = sim.neighbour_builds();
   r.wall_collisions = sim.wall_collisions();
+  r.settle_time = spec.settle_time;
+  r.settle_steps = sim.settle_steps();
   for (int p = 0; p < static_cast<int>(Phase::Count); ++p) {
     r.phase_seconds.emplace_back(std::string(phase_name(static_cast<Phase>(p))),
                                  sim.timer().seconds(static_cast<Phase>(p)));

@@ -29,6 +29,8 @@ struct RunSummary {
   std::int64_t pairs_visited = 0;
   std::int64_t neighbour_builds = 0;
   std::int64_t wall_collisions = 0;  ///< fluid particle-steps the wall collision model changed
+  double settle_time = 0.0;          ///< s of damped settling before t = 0
+  std::int64_t settle_steps = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;
 
   std::int64_t particles() const { return fluid + wall + ghost; }
@@ -36,7 +38,9 @@ struct RunSummary {
   double particle_steps_per_second() const;
   double fluid_particle_steps_per_second() const;
   double pairs_per_second() const;
-  double stepping_seconds() const { return stats.wall_seconds - stats.output_seconds; }
+  double stepping_seconds() const {
+    return stats.wall_seconds - stats.output_seconds - stats.settle_seconds;
+  }
 
   nlohmann::json to_json() const;
   std::string to_text() const;

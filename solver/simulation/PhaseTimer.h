@@ -44,6 +44,7 @@ class PhaseTimer {
     return f();
   }
   double seconds(Phase p) const { return seconds_[static_cast<int>(p)]; }
+  void reset() { seconds_ = {}; }
   double total() const {
     double s = 0.0;
     for (double v : seconds_) s += v;

@@ -73,8 +73,10 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
     progress(p);
   };
 
-  write_due();
   try {
+    sim_.settle();
+    stats_.settle_seconds = wall();
+    write_due();
     while (sim_.time() < end_ - tolerance) {
       const double stop = next < times_.size() ? std::min(times_[next], end_) : end_;
       sim_.step(stop);

@@ -38,6 +38,7 @@ struct RunStats {
   double dt_min = 0.0, dt_max = 0.0;
   std::int64_t frames = 0;
   double output_seconds = 0.0;  ///< part of wall_seconds spent writing frames
+  double settle_seconds = 0.0;  ///< part of wall_seconds spent settling before t = 0
   bool completed = false;
 };
 

@@ -217,5 +217,31 @@ TEST(WallCollision, WithoutItTheLoneParticleGoesThroughTheWall) {
   }
 }
 
+TEST(Settle, StartsTheClockAtZeroFromRest) {
+  // A column dropped from the lattice state settles for 0.05 s; then t = 0, step 0, at rest,
+  // and the particles are not where they started (they settled).
+  CaseSpec spec = minimal();
+  spec.hydrostatic_start = false;
+  spec.settle_time = 0.05;
+  Simulation sim(spec, build_scene(spec));
+  const ParticleState start = sim.particles().now;
+  sim.settle();
+  EXPECT_GT(sim.settle_steps(), 0);
+  EXPECT_EQ(sim.time(), 0.0);
+  EXPECT_EQ(sim.steps(), 0);
+  EXPECT_EQ(sim.max_speed(), 0.0);
+  const ParticleSet& ps = sim.particles();
+  double moved = 0.0;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    EXPECT_EQ(ps.now.u[i], 0.0);
+    EXPECT_EQ(ps.now.v[i], 0.0);
+  }
+  for (double y : ps.now.y) moved += y;
+  for (double y : start.y) moved -= y;
+  EXPECT_LT(moved, 0.0);  // the column sank onto itself under its weight
+  sim.step(1.0);
+  EXPECT_GT(sim.time(), 0.0);
+}
+
 }  // namespace
 }  // namespace wcmps
