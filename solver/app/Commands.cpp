@@ -111,6 +111,18 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
     line("                    %lld lattice points dropped within %g DL of a wall",
          static_cast<long long>(scene.trimmed_fluid), spec.wall_clearance);
   }
+  if (scene.displaced_fluid > 0) {
+    line("                    %lld lattice points displaced by solid bodies",
+         static_cast<long long>(scene.displaced_fluid));
+  }
+  if (spec.block) {
+    const BlockSpec& b = *spec.block;
+    line(
+        "block               C (%.4f, %.4f), A (%.4f, %.4f), G (%.4f, %.4f) m; CA %.4f, CG %.4f, "
+        "AG %.4f m; area %.5g m^2, mass %.2f kg per metre of width",
+        b.c.x, b.c.y, b.a.x, b.a.y, b.g.x, b.g.y, norm(b.a - b.c), norm(b.g - b.c), norm(b.g - b.a),
+        b.area(), b.area() * b.density);
+  }
   line("spacing DL          %g m, re = %g DL = %g m", spec.dl, spec.re_over_dl, spec.re());
   line("n0, lambda          %.6f, %.6f DL^2 (%d lattice neighbours)", scene.lattice.n0,
        scene.lattice.lambda / (spec.dl * spec.dl), scene.lattice.neighbours);

@@ -220,6 +220,7 @@ double signed_area(const std::vector<Vec2>& p) {
 FluidRegionSpec read_fluid(TableReader& r) {
   FluidRegionSpec f;
   f.where = r.where();
+  f.label = r.label();
   const toml::node* rect = r.get("rectangle");
   const toml::node* poly = r.get("polygon");
   if ((rect != nullptr) == (poly != nullptr)) {
@@ -239,6 +240,7 @@ FluidRegionSpec read_fluid(TableReader& r) {
 WallSpec read_wall(TableReader& r) {
   WallSpec w;
   w.where = r.where();
+  w.label = r.label();
   const toml::node* line = r.get("polyline");
   const toml::node* rect = r.get("rectangle");
   const toml::node* poly = r.get("polygon");
@@ -305,12 +307,54 @@ void read_tank(TableReader& r, CaseSpec& c) {
                  {t.length, t.freeboard}};
   wall.solid_on_right = true;  // going down the bed, the ground is on the right
   wall.where = t.where;
+  wall.label = "[tank]";
   c.walls.push_back(wall);
   FluidRegionSpec water;
   water.polygon = {{0.0, 0.0}, {toe, -t.depth}, {t.length, -t.depth}, {t.length, 0.0}};
   water.where = t.where;
+  water.label = "[tank]";
   c.fluids.push_back(water);
   c.tank = t;
+}
+
+/// [block]: the study's triangular block, on the bed of the [tank], added as a solid polygon.
+void read_block(TableReader& r, CaseSpec& c) {
+  BlockSpec b;
+  b.where = r.where();
+  if (!c.tank) throw CaseError(r.where(), "[block] sits on the bed of a [tank]: give one");
+  const TankSpec& t = *c.tank;
+  b.top_length = r.number("top_length", std::nullopt, 0.0, kInf, true);
+  b.angle_a_deg = r.number("angle_a", 100.0, 0.0, 180.0, true, true);
+  b.top_depth = r.number("top_depth", std::nullopt, 0.0, t.depth, true, true);
+  b.density = r.number("density", std::nullopt, 0.0, kInf, true);
+  const double deg = std::acos(-1.0) / 180.0;
+  const double alpha = t.slope_deg * deg, angle_a = b.angle_a_deg * deg;
+  const double angle_g = std::acos(-1.0) - alpha - angle_a;
+  if (!(angle_g > 0.0)) {
+    r.fail(*r.table().get("angle_a"), "angle_a",
+           "with the bed's " + fmt(t.slope_deg) + " degrees at C, the angles leave none for G");
+  }
+  // C on the bed at the top's depth; A along the horizontal top; G down the bed from C, at
+  // CG = CA sin(A) / sin(G) (law of sines).
+  b.c = {b.top_depth / std::tan(alpha), -b.top_depth};
+  b.a = b.c + Vec2{b.top_length, 0.0};
+  const double cg = b.top_length * std::sin(angle_a) / std::sin(angle_g);
+  b.g = b.c + Vec2{std::cos(alpha), -std::sin(alpha)} * cg;
+  if (b.g.y <= -t.depth) {
+    r.fail(*r.table().get("top_length"), "top_length",
+           "the block's corner G (" + fmt(b.g.x) + ", " + fmt(b.g.y) +
+               ") m lies below the toe of the bed: the block does not fit on the slope");
+  }
+  if (b.a.x >= t.length) r.fail(*r.table().get("top_length"), "top_length", "reaches the far wall");
+  r.finish();
+  WallSpec w;
+  w.points = {b.c, b.a, b.g};
+  w.closed = true;
+  w.solid_on_right = true;  // C -> A -> G runs clockwise
+  w.where = b.where;
+  w.label = "[block]";
+  c.walls.push_back(w);
+  c.block = b;
 }
 
 }  // namespace
@@ -473,6 +517,11 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     if (!n->is_table()) root.fail(*n, "tank", "expected a table [tank]");
     TableReader r(*n->as_table(), "[tank]", path);
     read_tank(r, c);
+  }
+  if (const toml::node* n = root.get("block")) {
+    if (!n->is_table()) root.fail(*n, "block", "expected a table [block]");
+    TableReader r(*n->as_table(), "[block]", path);
+    read_block(r, c);
   }
   tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
   tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });

@@ -4,6 +4,7 @@
 /// defaults are documented in docs/case-format.md). Plain data: the parser fills it, the scene
 /// builder and the simulation read it.
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@ struct FluidRegionSpec {
   std::vector<Vec2> polygon;
   Vec2 velocity;         ///< initial velocity (m/s)
   SourceLocation where;  ///< the [[fluid]] table in the case file
+  std::string label;     ///< how messages name it: "[[fluid]] #2", "[tank]"
 };
 
 /// A wall given by its surface line; particles are laid in rows parallel to it on its solid
@@ -35,6 +37,7 @@ struct WallSpec {
   bool closed = false;         ///< last point joins the first
   bool solid_on_right = true;  ///< solid side, looking along the polyline
   SourceLocation where;
+  std::string label;  ///< how messages name it: "[[wall]] #1", "[tank]", "[block]"
 };
 
 /// A tank with a sloping bed (a beach): the bed runs from above the shoreline down to a flat
@@ -47,6 +50,22 @@ struct TankSpec {
   double length = 0.0;     ///< shoreline to far wall along the still-water line (m)
   double freeboard = 0.0;  ///< height of bed and far wall above still water (m)
   SourceLocation where;
+};
+
+/// A triangular block resting on the bed of a [tank], named as the study names its corners:
+/// C the upslope top corner (the angle there is the bed slope, since the top is horizontal),
+/// A the downslope top corner, G the corner on the bed. Its top is `top_depth` below the still
+/// water and C sits on the bed. The builder makes it a solid polygon (wall and ghost rows
+/// inside it) that displaces the water.
+struct BlockSpec {
+  double top_length = 0.0;   ///< CA (m)
+  double angle_a_deg = 0.0;  ///< the angle at A, between the top and the front face (degrees)
+  double top_depth = 0.0;    ///< depth of the top below still water (m)
+  double density = 0.0;      ///< kg/m^3
+  Vec2 c, a, g;              ///< the corners (m), computed from the above and the tank
+  SourceLocation where;
+
+  double area() const { return 0.5 * std::abs(cross(a - c, g - c)); }
 };
 
 enum class NegativePressure { Zero, Keep };
@@ -111,7 +130,8 @@ struct CaseSpec {
   double max_density_ratio = 1.2;  ///< n*/n0 above this stops the run
   std::optional<std::pair<Vec2, Vec2>> domain;
 
-  std::optional<TankSpec> tank;  ///< already expanded into walls and fluids
+  std::optional<TankSpec> tank;    ///< already expanded into walls and fluids
+  std::optional<BlockSpec> block;  ///< already added to the walls
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 

@@ -17,11 +17,14 @@ std::string at(Vec2 p) {
   return buf;
 }
 
-std::string wall_label(std::size_t k) {
-  return "[[wall]] #" + std::to_string(k + 1);
+/// How messages name a shape: as the case file does, or by its place in the spec.
+std::string wall_label(const CaseSpec& spec, std::size_t k) {
+  const std::string& l = spec.walls[k].label;
+  return l.empty() ? "[[wall]] #" + std::to_string(k + 1) : l;
 }
-std::string fluid_label(std::size_t k) {
-  return "[[fluid]] #" + std::to_string(k + 1);
+std::string fluid_label(const CaseSpec& spec, std::size_t k) {
+  const std::string& l = spec.fluids[k].label;
+  return l.empty() ? "[[fluid]] #" + std::to_string(k + 1) : l;
 }
 
 struct WallGeometry {
@@ -153,8 +156,9 @@ Scene build_scene(const CaseSpec& spec) {
       try {
         row = offset_polyline(ws.points, ws.closed, g.normals, (k + 0.5) * dl);
       } catch (const std::domain_error& e) {
-        throw CaseError(ws.where, wall_label(w) + ": " + e.what() + " (row " + std::to_string(k) +
-                                      " at " + std::to_string(k + 0.5) + " DL behind the surface)");
+        throw CaseError(ws.where, wall_label(spec, w) + ": " + e.what() + " (row " +
+                                      std::to_string(k) + " at " + std::to_string(k + 0.5) +
+                                      " DL behind the surface)");
       }
       for (const auto& s : sample_polyline(row, ws.closed, dl)) {
         if (k == 0) {
@@ -199,7 +203,7 @@ Scene build_scene(const CaseSpec& spec) {
     const long j0 = static_cast<long>(std::floor((lo.y - o.y) / dl)) - 1;
     const long j1 = static_cast<long>(std::ceil((hi.y - o.y) / dl)) + 1;
     if ((i1 - i0) * (j1 - j0) > 200'000'000L) {
-      throw CaseError(spec.fluids[f].where, fluid_label(f) +
+      throw CaseError(spec.fluids[f].where, fluid_label(spec, f) +
                                                 ": more than 2e8 lattice points; "
                                                 "check the spacing and the shape");
     }
@@ -213,7 +217,7 @@ Scene build_scene(const CaseSpec& spec) {
       }
     }
     if (placed == 0) {
-      throw CaseError(spec.fluids[f].where, fluid_label(f) +
+      throw CaseError(spec.fluids[f].where, fluid_label(spec, f) +
                                                 ": the shape holds no lattice point at spacing " +
                                                 std::to_string(dl) + " m");
     }
@@ -225,15 +229,24 @@ Scene build_scene(const CaseSpec& spec) {
   for (const auto& [ij, vf] : lattice) {
     const Vec2 p{spec.lattice_origin.x + (ij.first + 0.5) * dl,
                  spec.lattice_origin.y + (ij.second + 0.5) * dl};
+    // A closed wall is a solid body: it displaces the fluid inside it.
+    bool displaced = false;
+    for (std::size_t w = 0; w < geometry.size() && !displaced; ++w) {
+      displaced = geometry[w].closed && polygon_contains(spec.walls[w].points, p);
+    }
+    if (displaced) {
+      ++scene.displaced_fluid;
+      continue;
+    }
     bool keep = true;
     for (std::size_t w = 0; w < geometry.size() && keep; ++w) {
       const double sd = signed_distance(geometry[w], p);
       if (sd < 0.0 && -sd < clearance) keep = false;  // fluid side, too close: trimmed
       if (sd >= 0.0 && sd < geometry[w].thickness) {
         throw CaseError(spec.fluids[vf.second].where,
-                        fluid_label(vf.second) + " overlaps " + wall_label(w) + " (line " +
-                            std::to_string(spec.walls[w].where.line) + "): fluid at " + at(p) +
-                            " is inside the wall");
+                        fluid_label(spec, vf.second) + " overlaps " + wall_label(spec, w) +
+                            " (line " + std::to_string(spec.walls[w].where.line) + "): fluid at " +
+                            at(p) + " is inside the wall");
       }
     }
     if (!keep) {
@@ -269,7 +282,7 @@ Scene build_scene(const CaseSpec& spec) {
       bottom = std::max(bottom, dot(p, down));
       if (!has_wall_along(geometry, p, down, reach)) {
         throw CaseError(spec.fluids[fluid_region[k]].where,
-                        fluid_label(fluid_region[k]) + " lies outside every wall: fluid at " +
+                        fluid_label(spec, fluid_region[k]) + " lies outside every wall: fluid at " +
                             at(p) + " has no wall below it");
       }
     }
@@ -299,8 +312,8 @@ Scene build_scene(const CaseSpec& spec) {
             if (std::hypot(bx[j] - bx[i], by[j] - by[i]) < min_gap) {
               const std::size_t a = boundary_owner[i], b = boundary_owner[j];
               throw CaseError(spec.walls[std::max(a, b)].where,
-                              wall_label(std::max(a, b)) + " overlaps " +
-                                  wall_label(std::min(a, b)) + " near " + at({bx[i], by[i]}) +
+                              wall_label(spec, std::max(a, b)) + " overlaps " +
+                                  wall_label(spec, std::min(a, b)) + " near " + at({bx[i], by[i]}) +
                                   "; join touching walls into one polyline");
             }
           }

@@ -9,7 +9,8 @@
 /// wall normal (thesis section 2.6, Fig. 2-3).
 ///
 /// Fluid: every point origin + (i + 1/2, j + 1/2) DL of the global lattice inside a fluid shape
-/// (regions are united), except points closer than wall_clearance x DL to a wall surface.
+/// (regions are united), except points inside a closed wall (a solid body displaces the fluid)
+/// and points closer than wall_clearance x DL to a wall surface.
 
 #include <cstdint>
 #include <vector>
@@ -31,7 +32,8 @@ struct Scene {
   double sound_speed = 0.0;   ///< c0 (m/s), given or derived
   double fluid_height = 0.0;  ///< extent of the fluid along gravity (m), for the derived c0
   int ghost_layers = 0;
-  std::int64_t trimmed_fluid = 0;  ///< lattice points dropped within the wall clearance
+  std::int64_t trimmed_fluid = 0;    ///< lattice points dropped within the wall clearance
+  std::int64_t displaced_fluid = 0;  ///< lattice points inside closed walls (solid bodies)
 };
 
 /// Builds the scene; throws CaseError when the geometry makes no sense (fluid inside a wall or

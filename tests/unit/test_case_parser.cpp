@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scene/CaseParser.h"
+#include "scene/Geometry.h"
 #include "scene/SceneBuilder.h"
 #include "support/TestSupport.h"
 
@@ -229,6 +230,57 @@ TEST(CaseParser, TankErrorsAreNamed) {
                "unknown key 'lenght' in [tank]");
   expect_error(replace(kTank, "[particles]", "[particles]\nsettle_damping = 0.0"), 5,
                "settle_damping");
+}
+
+/// The study's tank and block, case I or II (../shared/spec/cases.md) at the study's DL.
+std::string study_block_case(double slope, double top_length, double density) {
+  return "[case]\nname = \"block\"\n\n[particles]\nspacing = 0.005\n\n[time]\nend = 0.01\n\n"
+         "[tank]\nslope = " +
+         std::to_string(slope) +
+         "\ndepth = 0.7\nlength = 2.19\n\n[block]\ntop_length = " + std::to_string(top_length) +
+         "\nangle_a = 100.0\ntop_depth = 0.02\ndensity = " + std::to_string(density) + "\n";
+}
+
+TEST(SceneGeometry, TheStudysBlocksHaveTheirSidesAndVolumes) {
+  // cases.md: with a width of 0.05 m, CA / CG / AG = 0.1005 / 0.1540 / 0.1005 m (I) and
+  // 0.0843 / 0.1662 / 0.1293 m (II), volumes 248.82 and 268.482 cm^3. Sides are given to
+  // 0.1 mm, and CG and AG follow from CA times up to sin(100)/sin(30) = 1.97: the 0.05 mm of
+  // rounding in CA makes 0.1 mm in them, and case II's CA (0.08437 m from its volume) was cut
+  // to 0.0843, not rounded: tolerance 0.2 mm. Volumes: 0.3 %, the same rounding squared.
+  struct Expect {
+    double slope, ca, cg, ag, volume_cm3, density;
+  };
+  for (const Expect e : {Expect{40.0, 0.1005, 0.1540, 0.1005, 248.82, 2928.0},
+                         Expect{50.0, 0.0843, 0.1662, 0.1293, 268.482, 2853.0}}) {
+    const CaseSpec c = parse_case_text(study_block_case(e.slope, e.ca, e.density), "b.toml");
+    ASSERT_TRUE(c.block);
+    const BlockSpec& b = *c.block;
+    EXPECT_NEAR(norm(b.a - b.c), e.ca, 1e-12);
+    EXPECT_NEAR(norm(b.g - b.c), e.cg, 2e-4) << "slope " << e.slope;
+    EXPECT_NEAR(norm(b.g - b.a), e.ag, 2e-4) << "slope " << e.slope;
+    EXPECT_NEAR(b.area() * 0.05 * 1e6, e.volume_cm3, 0.003 * e.volume_cm3);
+    // C and G on the bed y = -x tan(slope); the top 0.02 m under the still water.
+    const double t = std::tan(e.slope * std::acos(-1.0) / 180.0);
+    EXPECT_NEAR(b.c.y, -b.c.x * t, 1e-12);
+    EXPECT_NEAR(b.g.y, -b.g.x * t, 1e-12);
+    EXPECT_DOUBLE_EQ(b.a.y, -0.02);
+    // The scene: the block displaces the water, and no fluid particle is inside it.
+    const Scene scene = build_scene(c);
+    const ParticleSet& ps = scene.particles;
+    EXPECT_GT(scene.displaced_fluid, 0);
+    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+      EXPECT_FALSE(polygon_contains({b.c, b.a, b.g}, {ps.now.x[i], ps.now.y[i]}));
+    }
+  }
+}
+
+TEST(SceneGeometry, BlockErrorsAreNamed) {
+  const std::string one = study_block_case(40.0, 0.1005, 2928.0);
+  expect_error(replace(one, "angle_a = 100.0", "angle_a = 150.0"), 17, "leave none for G");
+  expect_error(replace(one, "top_length = 0.100500", "top_length = 1.5"), 16,
+               "does not fit on the slope");
+  expect_error(replace(one, "[tank]\nslope = 40.000000\ndepth = 0.7\nlength = 2.19\n", ""), 0,
+               "[block] sits on the bed of a [tank]");
 }
 
 }  // namespace
