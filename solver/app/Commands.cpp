@@ -148,7 +148,7 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
   line("outputs             %zu frames (%g ... %g s); fields: %s; particles: %s", times.size(),
        times.front(), times.back(), fields.c_str(), kinds.c_str());
   line("pressure gradient   %s",
-       std::string(pressure_gradient_key(spec.pressure_gradient)).c_str());
+       std::string(scheme_key(kPressureGradientSchemes, spec.pressure_gradient)).c_str());
   line("domain              (%g, %g) ... (%g, %g) m", lo.x, lo.y, hi.x, hi.y);
 }
 

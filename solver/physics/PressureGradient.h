@@ -5,9 +5,9 @@
 /// with_pressure_gradient(), so the per-particle loop has no branch or virtual call.
 
 #include <cstdint>
-#include <optional>
 #include <string_view>
 
+#include "core/SchemeTable.h"
 #include "core/Vec2.h"
 #include "operators/MpsOperators.h"
 
@@ -51,13 +51,7 @@ struct PressureGradient_Suzuki2007 {
 
 enum class PressureGradientScheme { Koshizuka1998Min, Koshizuka1996, Suzuki2007 };
 
-struct SchemeEntry {
-  std::string_view key;  ///< name in the case file
-  PressureGradientScheme scheme;
-  std::string_view reference;
-};
-
-inline constexpr SchemeEntry kPressureGradientSchemes[] = {
+inline constexpr SchemeEntry<PressureGradientScheme> kPressureGradientSchemes[] = {
     {"koshizuka1998-min", PressureGradientScheme::Koshizuka1998Min,
      "Koshizuka, Nobe & Oka (1998), Int. J. Numer. Meth. Fluids 26, 751-769; thesis Eq. 2.19"},
     {"koshizuka1996", PressureGradientScheme::Koshizuka1996,
@@ -65,20 +59,6 @@ inline constexpr SchemeEntry kPressureGradientSchemes[] = {
     {"suzuki2007-variational", PressureGradientScheme::Suzuki2007,
      "Suzuki, Koshizuka & Oka (2007), Comput. Methods Appl. Mech. Engrg. 196, 2876-2894"},
 };
-
-inline std::optional<PressureGradientScheme> pressure_gradient_from_key(std::string_view key) {
-  for (const auto& e : kPressureGradientSchemes) {
-    if (e.key == key) return e.scheme;
-  }
-  return std::nullopt;
-}
-
-inline std::string_view pressure_gradient_key(PressureGradientScheme s) {
-  for (const auto& e : kPressureGradientSchemes) {
-    if (e.scheme == s) return e.key;
-  }
-  return "?";
-}
 
 /// Calls f(Scheme{}) with the scheme type that `s` names.
 template <class F>

@@ -22,9 +22,9 @@
 
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <string_view>
 
+#include "core/SchemeTable.h"
 #include "neighbours/NeighbourList.h"
 #include "particles/ParticleKind.h"
 
@@ -60,23 +60,10 @@ struct WallCollision_Koshizuka1998 {
   }
 };
 
-struct WallCollisionEntry {
-  std::string_view key;
-  WallCollisionScheme scheme;
-  std::string_view reference;
-};
-
-inline constexpr WallCollisionEntry kWallCollisionSchemes[] = {
+inline constexpr SchemeEntry<WallCollisionScheme> kWallCollisionSchemes[] = {
     {"koshizuka1998", WallCollisionScheme::Koshizuka1998,
      "Koshizuka, Nobe & Oka (1998), Int. J. Numer. Meth. Fluids 26, 751-769"},
     {"none", WallCollisionScheme::None, ""},
 };
-
-inline std::optional<WallCollisionScheme> wall_collision_from_key(std::string_view key) {
-  for (const auto& e : kWallCollisionSchemes) {
-    if (e.key == key) return e.scheme;
-  }
-  return std::nullopt;
-}
 
 }  // namespace wcmps

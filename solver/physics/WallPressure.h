@@ -22,6 +22,7 @@
 #include <optional>
 #include <string_view>
 
+#include "core/SchemeTable.h"
 #include "core/Vec2.h"
 #include "neighbours/NeighbourList.h"
 #include "operators/Kernel.h"
@@ -53,31 +54,11 @@ struct WallPressure_Adami2012 {
   }
 };
 
-struct WallPressureEntry {
-  std::string_view key;
-  WallPressureScheme scheme;
-  std::string_view reference;
-};
-
-inline constexpr WallPressureEntry kWallPressureSchemes[] = {
+inline constexpr SchemeEntry<WallPressureScheme> kWallPressureSchemes[] = {
     {"fluid-extrapolated", WallPressureScheme::FluidExtrapolated,
      "Adami, Hu & Adams (2012), J. Comput. Phys. 231, 7057-7075, Eq. 27"},
     {"eos", WallPressureScheme::Eos,
      "Shakibaeinia & Jin (2010), Int. J. Numer. Meth. Fluids 63, 1208-1232"},
 };
-
-inline std::optional<WallPressureScheme> wall_pressure_from_key(std::string_view key) {
-  for (const auto& e : kWallPressureSchemes) {
-    if (e.key == key) return e.scheme;
-  }
-  return std::nullopt;
-}
-
-inline std::string_view wall_pressure_key(WallPressureScheme s) {
-  for (const auto& e : kWallPressureSchemes) {
-    if (e.scheme == s) return e.key;
-  }
-  return "?";
-}
 
 }  // namespace wcmps

@@ -402,17 +402,15 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.eos_exponent = r.number("eos_exponent", 7.0, 1.0, 20.0);
     c.artificial_viscosity = r.number("artificial_viscosity", 0.02, 0.0, 1.0);
     c.surface_threshold = r.number("surface_threshold", 0.97, 0.0, 1.0, true, true);
-    std::vector<std::string> gradients;
-    for (const auto& e : kPressureGradientSchemes) gradients.emplace_back(e.key);
-    c.pressure_gradient = *pressure_gradient_from_key(
-        r.choice("pressure_gradient", "suzuki2007-variational", gradients));
-    std::vector<std::string> walls;
-    for (const auto& e : kWallPressureSchemes) walls.emplace_back(e.key);
-    c.wall_pressure = *wall_pressure_from_key(r.choice("wall_pressure", walls.front(), walls));
-    std::vector<std::string> collisions;
-    for (const auto& e : kWallCollisionSchemes) collisions.emplace_back(e.key);
-    c.wall_collision =
-        *wall_collision_from_key(r.choice("wall_collision", collisions.front(), collisions));
+    c.pressure_gradient = *scheme_from_key(kPressureGradientSchemes,
+                                           r.choice("pressure_gradient", "suzuki2007-variational",
+                                                    scheme_keys(kPressureGradientSchemes)));
+    const auto walls = scheme_keys(kWallPressureSchemes);
+    c.wall_pressure =
+        *scheme_from_key(kWallPressureSchemes, r.choice("wall_pressure", walls.front(), walls));
+    const auto collisions = scheme_keys(kWallCollisionSchemes);
+    c.wall_collision = *scheme_from_key(kWallCollisionSchemes,
+                                        r.choice("wall_collision", collisions.front(), collisions));
     c.collision_distance = r.number("collision_distance", 0.8, 0.5, 1.0, true, true);
     c.collision_restitution = r.number("collision_restitution", 0.2, 0.0, 1.0);
     c.negative_pressure = r.choice("negative_pressure", "zero", {"zero", "keep"}) == "zero"
