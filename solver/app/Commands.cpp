@@ -79,14 +79,7 @@ class LoggedSink : public FrameSink {
 void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
   const ParticleSet& ps = scene.particles;
   const Vec2 lo = scene.domain_lo, hi = scene.domain_hi;
-  TimeStepRule rule;
-  rule.mode = spec.step_mode;
-  rule.fixed = spec.fixed_step;
-  rule.courant = spec.courant;
-  rule.viscous_number = spec.viscous_number;
-  rule.dl = spec.dl;
-  rule.c0 = scene.sound_speed;
-  rule.nu = spec.kinematic_viscosity;
+  const TimeStepRule rule = time_step_rule(spec, scene.sound_speed);
   const double dt = rule.step(0.0);
   const double g = norm(spec.gravity);
   // Compression at the bottom of a still column of the fluid's height: n/n0 - 1 from the

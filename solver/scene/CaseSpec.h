@@ -138,4 +138,17 @@ struct CaseSpec {
   double re() const { return re_over_dl * dl; }
 };
 
+/// The time-step rule of a case, with the sound speed its scene was given.
+inline TimeStepRule time_step_rule(const CaseSpec& spec, double c0) {
+  TimeStepRule rule;
+  rule.mode = spec.step_mode;
+  rule.fixed = spec.fixed_step;
+  rule.courant = spec.courant;
+  rule.viscous_number = spec.viscous_number;
+  rule.dl = spec.dl;
+  rule.c0 = c0;
+  rule.nu = spec.kinematic_viscosity;
+  return rule;
+}
+
 }  // namespace wcmps

@@ -64,14 +64,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       sort_interval_(spec.sort_interval),
       settle_time_(spec.settle_time),
       settle_damping_(spec.settle_damping) {
-  rule_.mode = spec.step_mode;
-  rule_.fixed = spec.fixed_step;
-  rule_.courant = spec.courant;
-  rule_.viscous_number = spec.viscous_number;
-  rule_.dl = spec.dl;
-  rule_.c0 = scene_.sound_speed;
-  rule_.nu = spec.kinematic_viscosity;
-
+  rule_ = wcmps::time_step_rule(spec, scene_.sound_speed);
   ParticleSet& ps = scene_.particles;
   grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
   list_owners_ = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
@@ -125,7 +118,6 @@ void Simulation::step(double t_stop) {
   timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
   timer_.time(Phase::Pressure, [&] { compute_pressure(); });
   timer_.time(Phase::Correct, [&] { correct(dt); });
-  timer_.time(Phase::Correct, [&] { collide_with_walls(); });
   timer_.time(Phase::Move, [&] { move(dt); });
   timer_.time(Phase::Check, [&] { check_stability(dt); });
 
@@ -273,22 +265,17 @@ void Simulation::correct(double dt) {
       });
       input = p_over_n2_.data();
     }
-    parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-      const Vec2 g = Scheme::gradient(ops_, i, neighbours_.of(i), t.x.data(), t.y.data(), input);
+    // The wall collisions of i need only its corrected velocity and the boundary particles'
+    // (which this loop does not change): applied in the same pass over its neighbours' list.
+    const bool collide = collision_scheme_ != WallCollisionScheme::None;
+    next_collisions_ = parallel_count(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+      const IdRange nb = neighbours_.of(i);
+      const Vec2 g = Scheme::gradient(ops_, i, nb, t.x.data(), t.y.data(), input);
       t.u[i] += c * g.x;
       t.v[i] += c * g.y;
+      return collide && collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
+                                         ps.kind.data()) > 0;
     });
-  });
-  pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
-}
-
-void Simulation::collide_with_walls() {
-  if (collision_scheme_ == WallCollisionScheme::None) return;
-  ParticleSet& ps = scene_.particles;
-  ParticleState& t = ps.next;
-  next_collisions_ = parallel_count(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-    return collision_.apply(i, neighbours_.of(i), t.x.data(), t.y.data(), t.u.data(), t.v.data(),
-                            ps.kind.data()) > 0;
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }

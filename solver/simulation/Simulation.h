@@ -67,8 +67,8 @@ class Simulation {
   void predict(double dt);            // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
   void compute_number_density();      // n* at r* (Eq. 2.17)
   void compute_pressure();            // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
-  void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19)
-  void collide_with_walls();          // splash particles kept out of walls (Koshizuka 1998)
+  void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19),
+                                      // then wall collisions (Koshizuka 1998)
   void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
