@@ -279,6 +279,10 @@ TEST(SceneGeometry, BlockErrorsAreNamed) {
   expect_error(replace(one, "angle_a = 100.0", "angle_a = 150.0"), 17, "leave none for G");
   expect_error(replace(one, "top_length = 0.100500", "top_length = 1.5"), 16,
                "does not fit on the slope");
+  // Messages from the scene builder name the block as the case file does: at DL = 10 mm its
+  // top (10 DL) is too short for rows 3.5 DL deep behind 40-degree corners.
+  expect_error(replace(one, "spacing = 0.005", "spacing = 0.01"), 15,
+               "[block]: segment 1 is too short for the wall rows");
   expect_error(replace(one, "[tank]\nslope = 40.000000\ndepth = 0.7\nlength = 2.19\n", ""), 0,
                "[block] sits on the bed of a [tank]");
 }

@@ -8,6 +8,7 @@
 
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "io/RunSummary.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Runner.h"
@@ -241,6 +242,36 @@ TEST(Settle, StartsTheClockAtZeroFromRest) {
   EXPECT_LT(moved, 0.0);  // the column sank onto itself under its weight
   sim.step(1.0);
   EXPECT_GT(sim.time(), 0.0);
+}
+
+TEST(Settle, TheRunSummaryReportsItApartFromTheRun) {
+  // A run with settling: frames start at t = 0 from rest, run.json gives the settling's steps
+  // and wall time, and the run's steps and rates leave it out.
+  CaseSpec spec = minimal();
+  spec.settle_time = 0.02;
+  Simulation sim(spec, build_scene(spec));
+  struct Frames : FrameSink {
+    std::vector<double> times;
+    double first_max_speed = -1.0;
+    void write_frame(const Simulation& s) override {
+      if (times.empty()) first_max_speed = s.max_speed();
+      times.push_back(s.time());
+    }
+  } frames;
+  Runner runner(sim, output_times(spec, spec.end_time), spec.end_time);
+  const RunStats stats = runner.run(frames, nullptr);
+  ASSERT_FALSE(frames.times.empty());
+  EXPECT_EQ(frames.times.front(), 0.0);
+  EXPECT_EQ(frames.first_max_speed, 0.0);
+  EXPECT_GT(stats.settle_seconds, 0.0);
+  EXPECT_LE(stats.settle_seconds + stats.output_seconds, stats.wall_seconds);
+  const nlohmann::json j = summarize(spec, sim, stats, std::nullopt).to_json();
+  EXPECT_EQ(j["time"]["settle_time"].get<double>(), 0.02);
+  EXPECT_EQ(j["time"]["settle_steps"].get<std::int64_t>(), sim.settle_steps());
+  EXPECT_GT(sim.settle_steps(), 0);
+  EXPECT_EQ(j["time"]["steps"].get<std::int64_t>(), sim.steps());
+  EXPECT_EQ(j["wall_collisions"].get<std::int64_t>(), sim.wall_collisions());
+  EXPECT_EQ(j["performance"]["settle_seconds"].get<double>(), stats.settle_seconds);
 }
 
 }  // namespace
