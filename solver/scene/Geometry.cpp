@@ -90,7 +90,7 @@ std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& pts, bool c
     const Vec2 dir = (b - a) * (1.0 / length);
     const bool free_start = !closed && s == 0;
     const bool free_end = !closed && s + 1 == ns;
-    const bool skip_start = s > 0 || closed;      // the shared vertex was placed already...
+    const bool skip_start = s > 0;                // the shared vertex was placed already...
     const bool skip_end = closed && s + 1 == ns;  // ...or is the first point of the line
     std::vector<Vec2> points;
     if (free_start != free_end) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "scene/CaseParser.h"
+#include "scene/Geometry.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
 #include "support/TestSupport.h"
@@ -17,6 +18,41 @@ namespace {
 
 // Positions are built by adding multiples of DL = 0.01 m: rounding is ~1e-17 m.
 constexpr double kExact = 1e-12;
+
+// A closed outline keeps every corner, its first vertex included (it was once dropped, which
+// left a hole at that corner of every row of a solid body).
+TEST(Geometry, ClosedPolylineSamplesEveryCornerOnce) {
+  const std::vector<Vec2> square{{0.0, 0.0}, {0.1, 0.0}, {0.1, 0.1}, {0.0, 0.1}};
+  const auto samples = sample_polyline(square, true, 0.01);
+  EXPECT_EQ(samples.size(), 40u);
+  for (const Vec2 c : square) {
+    const auto hits = std::count_if(samples.begin(), samples.end(), [&](const PolylineSample& s) {
+      return norm(s.position - c) < kExact;
+    });
+    EXPECT_EQ(hits, 1) << "corner (" << c.x << ", " << c.y << ")";
+  }
+}
+
+// A solid square in the water: its wall row and ghost rows fill it from 0.5 to 3.5 DL inside
+// its surface, on the lattice, with no hole.
+TEST(SceneBuilder, SolidSquareRowsAreComplete) {
+  std::string text = test::minimal_case_text();
+  text += R"(
+[[wall]]
+rectangle = { min = [0.05, 0.02], max = [0.15, 0.10] }
+)";
+  const Scene scene = build_scene(parse_case_text(text, "square.toml"));
+  const ParticleSet& ps = scene.particles;
+  std::set<std::pair<long, long>> inside;
+  for (std::int64_t i = 0; i < ps.fluid_begin(); ++i) {
+    const double x = ps.now.x[i], y = ps.now.y[i];
+    if (x > 0.05 && x < 0.15 && y > 0.02 && y < 0.10) {
+      inside.insert({std::lround((x - 0.005) / 0.01), std::lround((y - 0.005) / 0.01)});
+    }
+  }
+  // 10 x 8 lattice cells, every one within 3.5 DL of the surface (the block is 8 DL high).
+  EXPECT_EQ(inside.size(), 80u);
+}
 
 TEST(SceneBuilder, TankWallRowIsDlApartAndInLineWithTheFluidRows) {
   const CaseSpec spec = parse_case_text(test::minimal_case_text(), "mini.toml");
