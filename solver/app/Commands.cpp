@@ -14,6 +14,7 @@
 #include "core/Parallel.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
+#include "io/BodyCsv.h"
 #include "io/RunDirectory.h"
 #include "io/RunSummary.h"
 #include "io/VtpSeriesWriter.h"
@@ -59,11 +60,13 @@ std::string progress_line(const Progress& p) {
 /// Writes frames through the series writer and notes each in the log.
 class LoggedSink : public FrameSink {
  public:
-  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log) : writer_(writer), log_(log) {}
+  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log, fs::path body_csv)
+      : writer_(writer), log_(log), body_csv_(std::move(body_csv)) {}
   void write_frame(const Simulation& sim) override {
     const std::size_t before = writer_.entries().size();
     writer_.write_frame(sim);
     if (writer_.entries().size() == before) return;
+    if (sim.body()) write_body_csv(body_csv_, sim.body_history());
     char buf[160];
     std::snprintf(buf, sizeof buf, "frame %-5zu t = %-10.6g step %-8lld dt %.4g s  %s", before,
                   sim.time(), static_cast<long long>(sim.steps()), sim.last_dt(),
@@ -74,6 +77,7 @@ class LoggedSink : public FrameSink {
  private:
   VtpSeriesWriter& writer_;
   std::ofstream& log_;
+  fs::path body_csv_;
 };
 
 void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
@@ -173,6 +177,13 @@ int run_command(const RunOptions& o) {
       }
       spec.end_time = *o.end_time;
     }
+    if (o.settle_time) {
+      if (!(*o.settle_time >= 0.0) || !std::isfinite(*o.settle_time)) {
+        std::cerr << "wcmps: error: --settle-time must be zero or a positive number of seconds\n";
+        return exit_code::kUsage;
+      }
+      spec.settle_time = *o.settle_time;
+    }
     scene = build_scene(spec);
   } catch (const CaseError& e) {
     std::cerr << "wcmps: error: " << e.what() << '\n';
@@ -194,7 +205,7 @@ int run_command(const RunOptions& o) {
     log << "threads             " << thread_count() << '\n' << std::flush;
     sim.emplace(spec, std::move(*scene));
     VtpSeriesWriter writer(dir, spec);
-    LoggedSink sink(writer, log);
+    LoggedSink sink(writer, log, dir / RunFiles::kBody);
     Runner runner(*sim, output_times(spec, spec.end_time), spec.end_time);
     std::size_t shown = 0;
     auto progress = [&](const Progress& p) {

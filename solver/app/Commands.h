@@ -11,6 +11,7 @@ struct RunOptions {
   std::string case_file;   ///< empty: the embedded default case
   std::string output_dir;  ///< empty: runs/<case name>
   std::optional<double> end_time;
+  std::optional<double> settle_time;
   std::optional<int> threads;
   bool overwrite = false;
 };

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   wcmps::RunOptions run;
-  double end_time = 0.0;
+  double end_time = 0.0, settle_time = 0.0;
   int threads = 0;
   auto* run_cmd = app.add_subcommand("run",
                                      "Run a case and write its series (.vtp frames, "
@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   auto* end_opt = run_cmd->add_option("--end-time", end_time,
                                       "stop at this simulated time (s) "
                                       "instead of the case's [time] end");
+  auto* settle_opt = run_cmd->add_option("--settle-time", settle_time,
+                                         "settle for this long (s) before t = 0 instead of the "
+                                         "case's [particles] settle_time (0: no settling)");
   auto* thr_opt =
       run_cmd->add_option("--threads", threads, "number of threads (default: all cores)")
           ->check(CLI::Range(1, 1024));
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) {
       if (*end_opt) run.end_time = end_time;
+      if (*settle_opt) run.settle_time = settle_time;
       if (*thr_opt) run.threads = threads;
       return wcmps::run_command(run);
     }

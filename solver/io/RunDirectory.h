@@ -13,6 +13,7 @@ struct RunFiles {
   static constexpr const char* kLog = "run.log";
   static constexpr const char* kCase = "case.toml";
   static constexpr const char* kFramePrefix = "frame_";
+  static constexpr const char* kBody = "block.csv";
 };
 
 /// Makes `dir` ready for a new run. A missing directory is created; an empty one is used. One

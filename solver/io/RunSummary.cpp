@@ -45,6 +45,22 @@ nlohmann::json RunSummary::to_json() const {
                {"dt_max", stats.dt_max},
                {"settle_time", settle_time},
                {"settle_steps", settle_steps}};
+  if (body) {
+    j["block"] = {{"time", body->time},
+                  {"S", body->state.s},
+                  {"U", body->state.u},
+                  {"A", body->state.a},
+                  {"history", "block.csv"}};
+  }
+  if (!sections.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& sec : sections) {
+      list.push_back({{"name", sec.name},
+                      {"origin", {sec.origin.x, sec.origin.y}},
+                      {"direction", {sec.direction.x, sec.direction.y}}});
+    }
+    j["sections"] = list;
+  }
   j["frames"] = stats.frames;
   j["wall_collisions"] = wall_collisions;
   j["performance"] = {{"wall_seconds", stats.wall_seconds},
@@ -81,6 +97,10 @@ std::string RunSummary::to_text() const {
   line("time step           %s, %lld steps, dt %.4g ... %.4g s", time_step.c_str(),
        static_cast<long long>(stats.steps), stats.dt_min, stats.dt_max);
   line("simulated time      %g s of %g s", stats.simulated_time, end_time);
+  if (body) {
+    line("block               t = %g s: S = %.5f m, U = %.4f m/s, A = %.3f m/s^2 (block.csv)",
+         body->time, body->state.s, body->state.u, body->state.a);
+  }
   if (settle_steps > 0) {
     line("settling            %g s before t = 0, %lld steps, %.3f s wall time", settle_time,
          static_cast<long long>(settle_steps), stats.settle_seconds);
@@ -131,6 +151,8 @@ RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats
                                  sim.timer().seconds(static_cast<Phase>(p)));
   }
   r.phase_seconds.emplace_back("output", stats.output_seconds);
+  r.sections = spec.sections;
+  if (const SlidingBody* b = sim.body()) r.body = b->sample(sim.time());
   return r;
 }
 

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "body/SlidingBody.h"
 #include "core/Error.h"
 #include "scene/CaseSpec.h"
 #include "simulation/Runner.h"
@@ -32,6 +33,8 @@ struct RunSummary {
   double settle_time = 0.0;          ///< s of damped settling before t = 0
   std::int64_t settle_steps = 0;
   std::vector<std::pair<std::string, double>> phase_seconds;
+  std::vector<SectionSpec> sections;  ///< measuring sections of the case
+  std::optional<BodySample> body;     ///< the block's state at the end
 
   std::int64_t particles() const { return fluid + wall + ghost; }
   /// All particles times steps, per wall second of stepping (frame output excluded).

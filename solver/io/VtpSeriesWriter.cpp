@@ -148,6 +148,16 @@ void VtpSeriesWriter::write_frame(const Simulation& sim) {
   add_field_value(fd, "lambda", sim.operators().lambda());
   add_field_value(fd, "c0", sim.scene().sound_speed);
   add_field_value(fd, "rho0", sim.density());
+  if (const SlidingBody* body = sim.body()) {
+    // The block's outline (its corners, x y 0) and motion, for figures and filters.
+    vtkNew<vtkDoubleArray> outline;
+    outline->SetName("BlockOutline");
+    outline->SetNumberOfComponents(3);
+    for (const Vec2 c : body->outline(body->state().s)) outline->InsertNextTuple3(c.x, c.y, 0.0);
+    fd->AddArray(outline);
+    add_field_value(fd, "BlockS", body->state().s);
+    add_field_value(fd, "BlockU", body->state().u);
+  }
   vtkNew<vtkStringArray> name;
   name->SetName("CaseName");
   name->InsertNextValue(case_name_);

@@ -6,7 +6,8 @@
 ///
 /// Each frame carries the fields the case asks for (particles/Fields.h) for the particle kinds
 /// it asks for, one vertex cell per particle, and field data that lets filters and scripts work
-/// without the case file: TimeValue, Step, DL, re, n0, lambda, c0, rho0, CaseName.
+/// without the case file: TimeValue, Step, DL, re, n0, lambda, c0, rho0, CaseName, and with a
+/// block its outline (BlockOutline: corners as x y 0 tuples), BlockS and BlockU.
 
 #include <cstdint>
 #include <filesystem>

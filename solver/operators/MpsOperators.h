@@ -72,6 +72,17 @@ class MpsOperators {
     return {c * (sx - phi_min * tx), c * (sy - phi_min * ty)};
   }
 
+  /// The minimum of phi over i and its neighbours within re (the reference of Eq. 2.19).
+  double neighbourhood_min(std::int64_t i, IdRange nb, const double* x, const double* y,
+                           const double* phi) const {
+    double phi_min = phi[i];
+    for (const std::int32_t j : nb) {
+      const double dx = x[j] - x[i], dy = y[j] - y[i];
+      if (dx * dx + dy * dy < re2_ && phi[j] < phi_min) phi_min = phi[j];
+    }
+    return phi_min;
+  }
+
   /// Pressure gradient as the exact derivative of the potential energy of the summed number
   /// density (variational form, Suzuki, Koshizuka & Oka 2007):
   ///

@@ -25,6 +25,11 @@ struct PressureGradient_Koshizuka1998Min {
                        const double* y, const double* p) {
     return ops.gradient_neighbourhood_min(i, nb, x, y, p);
   }
+  /// The part of gradient() that comes from the neighbours in `part` (a subset of nb).
+  static Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange nb, IdRange part,
+                            const double* x, const double* y, const double* p) {
+    return ops.gradient_with_reference(i, part, x, y, p, ops.neighbourhood_min(i, nb, x, y, p));
+  }
 };
 
 /// Koshizuka & Oka (1996), thesis Eq. 2.18: the plain MPS gradient with p_i. The study notes
@@ -34,6 +39,10 @@ struct PressureGradient_Koshizuka1996 {
   static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
                        const double* y, const double* p) {
     return ops.gradient(i, nb, x, y, p);
+  }
+  static Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange /*nb*/, IdRange part,
+                            const double* x, const double* y, const double* p) {
+    return ops.gradient(i, part, x, y, p);
   }
 };
 
@@ -46,6 +55,10 @@ struct PressureGradient_Suzuki2007 {
   static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
                        const double* y, const double* p_over_n2) {
     return ops.gradient_variational(i, nb, x, y, p_over_n2);
+  }
+  static Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange /*nb*/, IdRange part,
+                            const double* x, const double* y, const double* p_over_n2) {
+    return ops.gradient_variational(i, part, x, y, p_over_n2);
   }
 };
 

@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+
+#include "body/SlideMotion.h"
 
 namespace wcmps {
 namespace {
@@ -179,6 +182,7 @@ class TableReader {
 
   const toml::table& table() const { return t_; }
   const std::string& label() const { return label_; }
+  const std::string& file() const { return file_; }
 
  private:
   const toml::table& t_;
@@ -200,7 +204,7 @@ const toml::table& section(TableReader& root, const std::string& name, const tom
 std::vector<Vec2> rectangle_corners(TableReader& r, const toml::node& n, const std::string& key) {
   const toml::table* t = n.as_table();
   if (!t) r.fail(n, key, "expected { min = [x, y], max = [x, y] }");
-  TableReader rect(*t, r.label() + " " + key, r.where(n).file);
+  TableReader rect(*t, r.label() + " " + key, r.file());
   const auto lo = rect.point("min");
   const auto hi = rect.point("max");
   if (!lo || !hi) r.fail(n, key, "needs both min and max");
@@ -317,6 +321,49 @@ void read_tank(TableReader& r, CaseSpec& c) {
   c.tank = t;
 }
 
+/// [block.motion]: how the body moves.
+BodyMotionSpec read_motion(TableReader& r) {
+  BodyMotionSpec m;
+  m.where = r.where();
+  const std::string type = r.choice("type", "fixed", {"fixed", "table", "ln-cosh", "free"});
+  if (type == "table") {
+    m.type = BodyMotionType::Table;
+    const toml::array* t = r.array("times");
+    const toml::array* s = r.array("distances");
+    if (!t || !s)
+      throw CaseError(r.where(), r.label() + ": type \"table\" needs times and distances");
+    for (const auto& e : *t) {
+      m.times.push_back(r.number_value(e, "times", -kInf, kInf, false, false));
+      if (m.times.size() > 1 && !(m.times.back() > m.times[m.times.size() - 2])) {
+        r.fail(e, "times", "must be increasing");
+      }
+    }
+    for (const auto& e : *s)
+      m.distances.push_back(r.number_value(e, "distances", -kInf, kInf, false, false));
+    if (m.times.size() != m.distances.size() || m.times.size() < 2) {
+      r.fail(*r.table().get("distances"), "distances",
+             "needs one distance per time, at least two (" + std::to_string(m.times.size()) +
+                 " times, " + std::to_string(m.distances.size()) + " distances)");
+    }
+    try {
+      SplineSlide check(m.times, m.distances);
+    } catch (const std::invalid_argument& e) {
+      r.fail(*r.table().get("distances"), "distances", e.what());
+    }
+  } else if (type == "ln-cosh") {
+    m.type = BodyMotionType::LnCosh;
+    m.a0 = r.number("a0", std::nullopt, 0.0, kInf, true);
+    m.ut = r.number("ut", std::nullopt, 0.0, kInf, true);
+  } else if (type == "free") {
+    m.type = BodyMotionType::Free;
+    m.friction = r.number("friction", std::nullopt, 0.0, kInf);
+  } else {
+    m.type = BodyMotionType::Fixed;
+  }
+  r.finish();
+  return m;
+}
+
 /// [block]: the study's triangular block, on the bed of the [tank], added as a solid polygon.
 void read_block(TableReader& r, CaseSpec& c) {
   BlockSpec b;
@@ -346,7 +393,21 @@ void read_block(TableReader& r, CaseSpec& c) {
                ") m lies below the toe of the bed: the block does not fit on the slope");
   }
   if (b.a.x >= t.length) r.fail(*r.table().get("top_length"), "top_length", "reaches the far wall");
+  BodySpec body;
+  body.density = b.density;
+  body.downslope = {std::cos(alpha), -std::sin(alpha)};
+  body.bed_normal = {std::sin(alpha), std::cos(alpha)};
+  body.label = "[block]";
+  if (const toml::node* n = r.get("motion")) {
+    if (!n->is_table()) r.fail(*n, "motion", "expected a table [block.motion]");
+    TableReader m(*n->as_table(), "[block.motion]", r.file());
+    body.motion = read_motion(m);
+  } else {
+    body.motion.type = BodyMotionType::Fixed;
+    body.motion.where = b.where;
+  }
   r.finish();
+  body.wall = c.walls.size();
   WallSpec w;
   w.points = {b.c, b.a, b.g};
   w.closed = true;
@@ -355,6 +416,55 @@ void read_block(TableReader& r, CaseSpec& c) {
   w.label = "[block]";
   c.walls.push_back(w);
   c.block = b;
+  c.body = body;
+}
+
+/// [[section]]: a measuring line through a point (or a corner of the block), moved along the
+/// bed by `along_bed`, normal to the bed unless a direction is given.
+SectionSpec read_section(TableReader& r, const CaseSpec& c) {
+  SectionSpec sec;
+  sec.where = r.where();
+  sec.name = r.string("name", "");
+  if (sec.name.empty()) throw CaseError(r.where(), r.label() + " name is required");
+  const auto point = r.point("point");
+  const toml::node* at_node = r.get("at");
+  if (point.has_value() == (at_node != nullptr)) {
+    throw CaseError(r.where(), r.label() + ": give exactly one of point = [x, y] or at = \"C\"");
+  }
+  if (point) {
+    sec.origin = *point;
+  } else {
+    if (!c.block) r.fail(*at_node, "at", "names a corner of the [block]: give a [block]");
+    const BlockSpec& b = *c.block;
+    const std::string at = r.choice("at", "C", {"C", "A", "G", "B", "F"});
+    sec.origin = at == "C"   ? b.c
+                 : at == "A" ? b.a
+                 : at == "G" ? b.g
+                 : at == "B" ? 0.5 * (b.c + b.a)
+                             : 0.5 * (b.a + b.g);
+  }
+  const double along = r.number("along_bed", 0.0, -kInf, kInf);
+  const auto dir = r.point("direction");
+  if (!c.tank && (!dir || along != 0.0)) {
+    throw CaseError(r.where(), r.label() + ": without a [tank] (whose bed gives the normal) " +
+                                   "give direction = [dx, dy] and no along_bed");
+  }
+  if (c.tank) {
+    const double alpha = c.tank->slope_deg * std::acos(-1.0) / 180.0;
+    sec.origin += Vec2{std::cos(alpha), -std::sin(alpha)} * along;
+    sec.direction = {std::sin(alpha), std::cos(alpha)};
+  }
+  if (dir) {
+    if (!(norm(*dir) > 0.0)) r.fail(*r.table().get("direction"), "direction", "must not be zero");
+    sec.direction = *dir * (1.0 / norm(*dir));
+  }
+  r.finish();
+  for (const auto& other : c.sections) {
+    if (other.name == sec.name) {
+      r.fail(*r.table().get("name"), "name", "\"" + sec.name + "\" is used by another section");
+    }
+  }
+  return sec;
 }
 
 }  // namespace
@@ -523,6 +633,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
   }
   tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
   tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });
+  tables("section", [&](TableReader& r) { c.sections.push_back(read_section(r, c)); });
   root.finish();
 
   if (c.fluids.empty()) throw CaseError(c.file, "the case has no [[fluid]] region or [tank]");

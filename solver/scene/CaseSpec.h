@@ -68,6 +68,42 @@ struct BlockSpec {
   double area() const { return 0.5 * std::abs(cross(a - c, g - c)); }
 };
 
+/// How a rigid body moves ([block.motion] type).
+enum class BodyMotionType {
+  Fixed,   ///< held in place
+  Table,   ///< prescribed along the bed: a C2 spline through a table of S(t) (SplineSlide)
+  LnCosh,  ///< prescribed along the bed: S = s0 ln cosh(t/t0) (LnCoshSlide)
+  Free,    ///< moved by gravity and the fluid's forces, with Coulomb friction on the bed
+};
+
+struct BodyMotionSpec {
+  BodyMotionType type = BodyMotionType::Fixed;
+  std::vector<double> times, distances;  ///< Table: t (s) and S (m), increasing
+  double a0 = 0.0, ut = 0.0;             ///< LnCosh: initial acceleration, terminal speed
+  double friction = 0.0;                 ///< Free: Coulomb coefficient mu between body and bed
+  SourceLocation where;
+};
+
+/// A rigid body made of one closed wall's particles, sliding along a straight line (a bed) or
+/// held fixed. The [block] fills it in; tests may give any closed wall.
+struct BodySpec {
+  std::size_t wall = 0;  ///< index into CaseSpec::walls (a closed wall)
+  double density = 0.0;  ///< kg/m^3; its mass per unit width is density x area
+  Vec2 downslope;        ///< unit vector along which S counts
+  Vec2 bed_normal;       ///< unit normal of the bed, out of it (the bed pushes along it)
+  BodyMotionSpec motion;
+  std::string label;  ///< how messages and files name it
+};
+
+/// A measuring section, fixed in space: the line from `origin` (on the bed or the body's
+/// surface) along `direction` (unit; normal to the bed) up to the free surface.
+struct SectionSpec {
+  std::string name;
+  Vec2 origin;
+  Vec2 direction;
+  SourceLocation where;
+};
+
 enum class NegativePressure { Zero, Keep };
 
 struct CaseSpec {
@@ -132,6 +168,8 @@ struct CaseSpec {
 
   std::optional<TankSpec> tank;    ///< already expanded into walls and fluids
   std::optional<BlockSpec> block;  ///< already added to the walls
+  std::optional<BodySpec> body;    ///< the wall that moves as a rigid body (the block's)
+  std::vector<SectionSpec> sections;
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 

@@ -100,7 +100,7 @@ std::vector<std::vector<std::size_t>> column_runs(const std::vector<ParticleSeed
 }
 
 /// Puts the fluid in the hydrostatic state of the Tait equation, n/n0 = s(h) =
-/// (1 + gamma g h / c0^2)^(1/gamma) at depth h below the top of its run (gravity along -y):
+/// (1 + gamma g h / c0^2)^(1/gamma) at depth h below the top of its column (gravity along -y):
 /// rows are moved closer, to the spacing whose lattice sum gives n/n0 = s (the discrete n of
 /// a squeezed lattice grows 1.23 times faster than 1/dy at re = 3.5 DL), the bottom row
 /// staying. Depths repeat from column to column, so each spacing is solved once.
@@ -111,8 +111,18 @@ void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spe
     return std::pow(1.0 + spec.eos_exponent * g * depth / (c0 * c0), 1.0 / spec.eos_exponent);
   };
   std::map<long, double> spacing;  // by depth in half spacings
+  // A run may end under a solid (a body in the water): its depth counts from the free surface
+  // of its column, the top of the column's highest run, not from the solid.
+  std::map<long, double> column_top;
+  auto column_of = [&](double x) { return std::lround((x - spec.lattice_origin.x) / dl - 0.5); };
+  for (const auto& f : fluid) {
+    const long c = column_of(f.position.x);
+    const auto it = column_top.find(c);
+    const double top = f.position.y + 0.5 * dl;
+    if (it == column_top.end() || it->second < top) column_top[c] = top;
+  }
   for (const auto& run : column_runs(fluid, spec)) {
-    const double top = fluid[run.back()].position.y + 0.5 * dl;  // free surface of the run
+    const double top = column_top[column_of(fluid[run.front()].position.x)];
     double y = fluid[run.front()].position.y;
     for (std::size_t k = 1; k < run.size(); ++k) {
       const double depth = top - 0.5 * (fluid[run[k]].position.y + fluid[run[k - 1]].position.y);
@@ -143,8 +153,19 @@ Scene build_scene(const CaseSpec& spec) {
   std::vector<std::size_t> boundary_owner;  // wall spec of each boundary particle (walls, ghosts)
   std::vector<WallGeometry> geometry;
   std::vector<std::size_t> ghost_owner;
+  std::size_t body_wall_begin = 0, body_wall_end = 0, body_ghost_begin = 0, body_ghost_end = 0;
+  std::size_t body_rows_begin = 0, body_rows_end = 0;
+  if (spec.body && (spec.body->wall >= spec.walls.size() || !spec.walls[spec.body->wall].closed)) {
+    throw CaseError(spec.file, spec.body->label + ": a rigid body must be a closed wall");
+  }
   for (std::size_t w = 0; w < spec.walls.size(); ++w) {
     const WallSpec& ws = spec.walls[w];
+    const bool is_body = spec.body && spec.body->wall == w;
+    if (is_body) {
+      body_wall_begin = walls.size();
+      body_ghost_begin = ghosts.size();
+      body_rows_begin = scene.wall_rows.size();
+    }
     WallGeometry g;
     g.surface = polyline_segments(ws.points, ws.closed);
     g.normals = solid_normals(g.surface, ws.solid_on_right);
@@ -184,6 +205,11 @@ Scene build_scene(const CaseSpec& spec) {
       }
     }
     geometry.push_back(std::move(g));
+    if (is_body) {
+      body_wall_end = walls.size();
+      body_ghost_end = ghosts.size();
+      body_rows_end = scene.wall_rows.size();
+    }
   }
   boundary_owner.insert(boundary_owner.end(), ghost_owner.begin(), ghost_owner.end());
 
@@ -357,6 +383,21 @@ Scene build_scene(const CaseSpec& spec) {
     set_hydrostatic_state(fluid, spec, scene.sound_speed);
   }
   scene.particles = ParticleSet(walls, ghosts, ghost_sources, fluid);
+  if (spec.body) {
+    BodyParticles b;
+    const auto nw = static_cast<std::int64_t>(walls.size());
+    b.walls = {static_cast<std::int64_t>(body_wall_begin),
+               static_cast<std::int64_t>(body_wall_end)};
+    b.ghosts = {nw + static_cast<std::int64_t>(body_ghost_begin),
+                nw + static_cast<std::int64_t>(body_ghost_end)};
+    b.rows = {body_rows_begin, body_rows_end};
+    b.outline = spec.walls[spec.body->wall].points;
+    for (std::size_t k = 0; k < b.outline.size(); ++k) {
+      b.area += 0.5 * cross(b.outline[k], b.outline[(k + 1) % b.outline.size()]);
+    }
+    b.area = std::abs(b.area);
+    scene.body = std::move(b);
+  }
   return scene;
 }
 

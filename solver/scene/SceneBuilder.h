@@ -13,6 +13,8 @@
 /// and points closer than wall_clearance x DL to a wall surface.
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "operators/LatticeConstants.h"
@@ -21,6 +23,14 @@
 #include "scene/Geometry.h"
 
 namespace wcmps {
+
+/// The particles of the rigid body (CaseSpec::body): the wall and ghost rows of its wall.
+struct BodyParticles {
+  std::pair<std::int64_t, std::int64_t> walls, ghosts;  ///< index ranges in the ParticleSet
+  std::pair<std::size_t, std::size_t> rows;  ///< its wall rows in Scene::wall_rows (at rest)
+  std::vector<Vec2> outline;                 ///< its surface polygon at rest
+  double area = 0.0;                         ///< of the outline (m^2)
+};
 
 struct Scene {
   ParticleSet particles;
@@ -34,6 +44,7 @@ struct Scene {
   int ghost_layers = 0;
   std::int64_t trimmed_fluid = 0;    ///< lattice points dropped within the wall clearance
   std::int64_t displaced_fluid = 0;  ///< lattice points inside closed walls (solid bodies)
+  std::optional<BodyParticles> body;
 };
 
 /// Builds the scene; throws CaseError when the geometry makes no sense (fluid inside a wall or

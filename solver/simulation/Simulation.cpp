@@ -76,7 +76,9 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     return std::sqrt(sq(ps.now.u[i]) + sq(ps.now.v[i]));
   });
   if (ps.fluid_count() == 0) max_speed_ = 0.0;
+  if (scene_.body && spec.body) body_.emplace(*spec.body, *scene_.body, gravity_, ps.now);
   compute_initial_pressure();
+  if (body_) body_history_ = {body_->sample(0.0)};
 }
 
 void Simulation::compute_initial_pressure() {
@@ -90,7 +92,68 @@ void Simulation::compute_initial_pressure() {
   ps.now.p = ps.next.p;
   ps.now.n = ps.next.n;
   ps.now.surface = ps.next.surface;
+  if (body_) {
+    with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
+      using Scheme = decltype(scheme);
+      body_->commit(body_->state(), body_force<Scheme>(gradient_input<Scheme>()));
+    });
+  }
   pairs_visited_ = 0;
+}
+
+void Simulation::find_fluid_near_body() {
+  const ParticleSet& ps = scene_.particles;
+  near_body_.clear();
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    for (const std::int32_t j : neighbours_.of(i)) {
+      if (in_body(j)) {
+        near_body_.push_back(static_cast<std::int32_t>(i));
+        break;
+      }
+    }
+  }
+}
+
+template <class Scheme>
+const double* Simulation::gradient_input() {
+  ParticleSet& ps = scene_.particles;
+  const ParticleState& t = ps.next;
+  if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
+    const double inv_n0_2 = 1.0 / (ops_.n0() * ops_.n0());
+    parallel_for(0, ps.size(), [&](std::int64_t i) {
+      p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2 : t.p[i] / (t.n[i] * t.n[i]);
+    });
+    return p_over_n2_.data();
+  } else {
+    return t.p.data();
+  }
+}
+
+template <class Scheme>
+BodyForce Simulation::body_force(const double* input) const {
+  // Fluid particle i gets -grad p / rho and the viscous acceleration from the body's particles
+  // (the part of its sums over them); the body gets minus that times i's mass rho DL^2.
+  const ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  const ParticleState& t = ps.next;
+  const bool viscous = viscosity_.nu > 0.0 || artificial_viscosity_.alpha > 0.0;
+  Vec2 gradient, acceleration;
+  std::vector<std::int32_t> part;
+  for (const std::int32_t i : near_body_) {
+    const IdRange nb = neighbours_.of(i);
+    part.clear();
+    for (const std::int32_t j : nb) {
+      if (in_body(j)) part.push_back(j);
+    }
+    const IdRange of_body{part.data(), part.data() + part.size()};
+    gradient += Scheme::gradient_part(ops_, i, nb, of_body, t.x.data(), t.y.data(), input);
+    if (viscous) {
+      acceleration += viscous_acceleration(ops_, viscosity_, artificial_viscosity_, i, of_body,
+                                           s.x.data(), s.y.data(), s.u.data(), s.v.data());
+    }
+  }
+  const double volume = rule_.dl * rule_.dl;
+  return {gradient * volume, acceleration * (-density_ * volume)};
 }
 
 void Simulation::step(double t_stop) {
@@ -108,7 +171,10 @@ void Simulation::step(double t_stop) {
   if (!(dt > 0.0)) return;
 
   timer_.time(Phase::Neighbours, [&] { update_neighbours(dt); });
-  timer_.time(Phase::Predict, [&] { predict(dt); });
+  timer_.time(Phase::Predict, [&] {
+    move_body(dt);
+    predict(dt);
+  });
   if (2.0 * star_drift_ >= skin_) {
     // The estimate of update_neighbours() fell short (a sudden acceleration): rebuild at r^n
     // and predict again. If one step alone moves a particle that far, check_stability stops.
@@ -133,11 +199,16 @@ void Simulation::step(double t_stop) {
   } else {
     time_ = lands_on_stop ? t_stop : time_ + dt;
   }
+  if (body_) {
+    body_->commit(body_next_, body_force_next_);
+    body_history_.push_back(body_->sample(time_));
+  }
 }
 
 void Simulation::settle() {
   if (!(settle_time_ > 0.0)) return;
   ParticleSet& ps = scene_.particles;
+  if (body_) body_->hold(true);  // the block is released at t = 0
   while (time_ < settle_time_) {
     step(settle_time_);
     const double keep = std::exp(-last_dt_ / settle_damping_);
@@ -152,6 +223,11 @@ void Simulation::settle() {
     ps.now.v[i] = 0.0;
   });
   max_speed_ = 0.0;
+  if (body_) {
+    body_->hold(false);
+    body_->reset_motion();
+    body_history_ = {body_->sample(0.0)};
+  }
   settle_steps_ = steps_;
   steps_ = 0;
   time_ = 0.0;
@@ -165,7 +241,8 @@ void Simulation::update_neighbours(double dt) {
   // Lists hold every pair within re + skin at the last build. Pairs within re at r* are all in
   // them while no particle has moved skin/2 from where it was at the build. Estimate this
   // step's move from the current speed and gravity (predict() measures the actual one).
-  const double move = dt * (1.5 * max_speed_ + dt * norm(gravity_));
+  const double body_speed = body_ ? std::abs(body_->state().u) : 0.0;
+  const double move = dt * (std::max(1.5 * max_speed_, body_speed) + dt * norm(gravity_));
   if (!built_ || 2.0 * (drift_ + move) >= skin_) rebuild_neighbours();
 }
 
@@ -183,8 +260,18 @@ void Simulation::rebuild_neighbours() {
     y_built_[i] = ps.now.y[i];
   });
   drift_ = 0.0;
+  if (body_) {
+    body_built_s_ = body_->state().s;
+    find_fluid_near_body();
+  }
   built_ = true;
   ++builds_;
+}
+
+void Simulation::move_body(double dt) {
+  if (!body_) return;
+  body_next_ = body_->advance(time_, dt);
+  body_->place(body_next_, scene_.particles.next);
 }
 
 void Simulation::predict(double dt) {
@@ -205,6 +292,7 @@ void Simulation::predict(double dt) {
     return std::sqrt(sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]));
   });
   if (ps.fluid_count() == 0) star_drift_ = 0.0;
+  if (body_) star_drift_ = std::max(star_drift_, body_drift(body_next_.s));
   if (viscous) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
@@ -235,10 +323,14 @@ void Simulation::compute_pressure() {
   if (wall_scheme_ == WallPressureScheme::Eos) {
     parallel_for(0, ps.wall_end(), from_number_density);
   } else {
+    // A moving wall's particles feel g - a (Adami et al. 2012, Eq. 27).
+    const IndexRange body = body_ ? body_->particles().walls : IndexRange{0, 0};
+    const Vec2 body_g = body_ ? gravity_ - body_->downslope() * body_next_.a : gravity_;
     parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+      const Vec2 g = w >= body.first && w < body.second ? body_g : gravity_;
       const auto p =
           WallPressure_Adami2012::pressure(w, neighbours_.of(w), t.x.data(), t.y.data(), t.p.data(),
-                                           ps.kind.data(), ops_.kernel(), density_, gravity_);
+                                           ps.kind.data(), ops_.kernel(), density_, g);
       double pw = p.value_or(0.0);
       if (zero_negative_pressure_ && pw < 0.0) pw = 0.0;
       t.p[w] = pw;
@@ -257,14 +349,7 @@ void Simulation::correct(double dt) {
   const double c = -dt / density_;
   with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
     using Scheme = decltype(scheme);
-    const double* input = t.p.data();
-    if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
-      const double inv_n0_2 = 1.0 / (ops_.n0() * ops_.n0());
-      parallel_for(0, ps.size(), [&](std::int64_t i) {
-        p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2 : t.p[i] / (t.n[i] * t.n[i]);
-      });
-      input = p_over_n2_.data();
-    }
+    const double* input = gradient_input<Scheme>();
     // The wall collisions of i need only its corrected velocity and the boundary particles'
     // (which this loop does not change): applied in the same pass over its neighbours' list.
     const bool collide = collision_scheme_ != WallCollisionScheme::None;
@@ -276,6 +361,7 @@ void Simulation::correct(double dt) {
       return collide && collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
                                          ps.kind.data()) > 0;
     });
+    if (body_) body_force_next_ = body_force<Scheme>(input);
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
@@ -293,6 +379,7 @@ void Simulation::move(double dt) {
   // Kept aside until the step is committed: a failed step leaves the state as it was.
   next_max_speed_ = ps.fluid_count() > 0 ? speed : 0.0;
   next_drift_ = ps.fluid_count() > 0 ? drift : 0.0;
+  if (body_) next_drift_ = std::max(next_drift_, body_drift(body_next_.s));
 }
 
 void Simulation::check_stability(double dt) {
@@ -307,6 +394,10 @@ void Simulation::check_stability(double dt) {
   // (r* is not kept; the particles are found by their new positions, which differ from r*
   // by dt times the pressure correction.)
   const bool moved_too_far = 2.0 * star_drift_ >= skin_;
+  // The body's rows move: a particle crossed one if it crossed it in the body's frame.
+  const auto body_rows = body_ ? body_->particles().rows : std::pair<std::size_t, std::size_t>{};
+  const Vec2 body_now = body_ ? body_->offset(body_->state().s) : Vec2{};
+  const Vec2 body_next = body_ ? body_->offset(body_next_.s) : Vec2{};
   auto failure = [&](std::int64_t i) -> std::uint8_t {
     const double x = t.x[i], y = t.y[i];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(t.u[i]) ||
@@ -315,8 +406,12 @@ void Simulation::check_stability(double dt) {
     }
     if (x < lo.x || y < lo.y || x > hi.x || y > hi.y) return kLeftDomain;
     const Vec2 a{s.x[i], s.y[i]}, b{x, y};
-    for (const auto& r : rows) {
-      if (segments_intersect(a, b, r.a, r.b)) return kCrossedWall;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const bool moves = k >= body_rows.first && k < body_rows.second;
+      if (moves ? segments_intersect(a - body_now, b - body_next, rows[k].a, rows[k].b)
+                : segments_intersect(a, b, rows[k].a, rows[k].b)) {
+        return kCrossedWall;
+      }
     }
     if (t.n[i] > n_max) return kDensityBlowUp;
     if (moved_too_far && 2.0 * std::sqrt(sq(x - x_built_[i]) + sq(y - y_built_[i])) >= skin_) {

@@ -3,7 +3,10 @@
 /// @brief The WC-MPS time step of the study (thesis section 2.7, Fig. 2-5) over a scene.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
+
+#include "body/SlidingBody.h"
 
 #include "neighbours/CellGrid.h"
 #include "neighbours/NeighbourList.h"
@@ -40,6 +43,11 @@ class Simulation {
   void settle();
   std::int64_t settle_steps() const { return settle_steps_; }
 
+  /// The rigid body of the scene (the block), if it has one.
+  const SlidingBody* body() const { return body_ ? &*body_ : nullptr; }
+  /// Its state after every step since t = 0 (the first entry is t = 0).
+  const std::vector<BodySample>& body_history() const { return body_history_; }
+
   double time() const { return time_; }
   std::int64_t steps() const { return steps_; }
   double last_dt() const { return last_dt_; }
@@ -64,6 +72,7 @@ class Simulation {
   // The phases of one step, in order.
   void update_neighbours(double dt);  // lists at r^n, rebuilt when particles drift (2.3)
   void rebuild_neighbours();          // cell grid + lists, reordering now and then
+  void move_body(double dt);          // the body to t^{n+1}: its law or its dynamics
   void predict(double dt);            // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
   void compute_number_density();      // n* at r* (Eq. 2.17)
   void compute_pressure();            // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
@@ -73,6 +82,17 @@ class Simulation {
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
+  void find_fluid_near_body();        // at rebuilds: fluid particles with body neighbours
+  template <class Scheme>
+  const double* gradient_input();  // p, or p/n^2 for the variational gradient
+  template <class Scheme>
+  BodyForce body_force(const double* input) const;  // reaction of the body's pair forces
+  bool in_body(std::int64_t j) const {
+    const auto& b = body_->particles();
+    return (j >= b.walls.first && j < b.walls.second) ||
+           (j >= b.ghosts.first && j < b.ghosts.second);
+  }
+  double body_drift(double s) const { return body_ ? std::abs(s - body_built_s_) : 0.0; }
 
   Scene scene_;
   MpsOperators ops_;
@@ -114,6 +134,13 @@ class Simulation {
   std::int64_t pairs_visited_ = 0;
   std::int64_t wall_collisions_ = 0, next_collisions_ = 0;
   std::int64_t settle_steps_ = 0;
+
+  std::optional<SlidingBody> body_;
+  SlideState body_next_;                 // of the step in progress
+  BodyForce body_force_next_;            // of the step in progress
+  double body_built_s_ = 0.0;            // its S at the last build of the lists
+  std::vector<std::int32_t> near_body_;  // fluid particles with body particles in their lists
+  std::vector<BodySample> body_history_;
 };
 
 }  // namespace wcmps

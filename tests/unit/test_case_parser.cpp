@@ -287,5 +287,47 @@ TEST(SceneGeometry, BlockErrorsAreNamed) {
                "[block] sits on the bed of a [tank]");
 }
 
+// [block.motion] and [[section]]: what each key makes, and each error named where it is.
+TEST(CaseParser, BlockMotionAndSections) {
+  const std::string one = study_block_case(40.0, 0.1005, 2928.0);
+  const std::string table =
+      one +
+      "\n[block.motion]\ntype = \"table\"\ntimes = [0.0, 0.1, 0.2]\n"
+      "distances = [0.0, 0.018, 0.058]\n\n[[section]]\nname = \"D\"\nat = \"C\"\n"
+      "along_bed = -0.01\n[[section]]\nname = \"P\"\npoint = [0.5, -0.3]\n"
+      "direction = [0.0, 2.0]\n";
+  const CaseSpec c = parse_case_text(table, "b.toml");
+  ASSERT_TRUE(c.body);
+  EXPECT_EQ(c.body->motion.type, BodyMotionType::Table);
+  EXPECT_EQ(c.body->wall, c.walls.size() - 1);  // the block's wall
+  EXPECT_EQ(c.body->motion.distances.size(), 3u);
+  const double a = 40.0 * std::acos(-1.0) / 180.0;
+  EXPECT_NEAR(c.body->downslope.x, std::cos(a), 1e-15);
+  EXPECT_NEAR(c.body->downslope.y, -std::sin(a), 1e-15);
+  ASSERT_EQ(c.sections.size(), 2u);
+  // D: 0.01 m upslope of C, normal to the bed; P: where given, along its direction.
+  EXPECT_NEAR(norm(c.sections[0].origin - c.block->c), 0.01, 1e-15);
+  EXPECT_LT(c.sections[0].origin.x, c.block->c.x);
+  EXPECT_NEAR(c.sections[0].direction.x, std::sin(a), 1e-15);
+  EXPECT_NEAR(c.sections[0].direction.y, std::cos(a), 1e-15);
+  EXPECT_DOUBLE_EQ(c.sections[1].direction.y, 1.0);
+  // Without [block.motion] the block is held.
+  EXPECT_EQ(parse_case_text(one, "b.toml").body->motion.type, BodyMotionType::Fixed);
+
+  expect_error(replace(table, "distances = [0.0, 0.018, 0.058]", "distances = [0.0, 0.018]"), 24,
+               "needs one distance per time");
+  expect_error(replace(table, "times = [0.0, 0.1, 0.2]", "times = [0.0, 0.2, 0.1]"), 23,
+               "[block.motion] times: must be increasing");
+  expect_error(replace(table, "distances = [0.0, 0.018, 0.058]", "distances = [0.0, 0.058, 0.0]"),
+               24, "moves backwards");
+  expect_error(replace(table, "type = \"table\"", "type = \"free\""), 21,
+               "[block.motion] friction is required");
+  expect_error(replace(table, "type = \"table\"", "type = \"sliding\""), 22,
+               "\"sliding\" is not one of");
+  expect_error(replace(table, "at = \"C\"", "at = \"Z\""), 28, "[[section]] #1 at");
+  expect_error(replace(table, "name = \"P\"", "name = \"D\""), 31, "is used by another section");
+  expect_error(replace(table, "point = [0.5, -0.3]\n", ""), 30, "give exactly one of point");
+}
+
 }  // namespace
 }  // namespace wcmps
