@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "body/SlideMotion.h"
+#include "scene/Geometry.h"
 
 namespace wcmps {
 namespace {
@@ -213,12 +214,6 @@ std::vector<Vec2> rectangle_corners(TableReader& r, const toml::node& n, const s
     r.fail(n, key, "max must be greater than min in x and in y");
   }
   return {*lo, {hi->x, lo->y}, *hi, {lo->x, hi->y}};
-}
-
-double signed_area(const std::vector<Vec2>& p) {
-  double a = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
-  return 0.5 * a;
 }
 
 FluidRegionSpec read_fluid(TableReader& r) {

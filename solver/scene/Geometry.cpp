@@ -6,6 +6,12 @@
 
 namespace wcmps {
 
+double signed_area(const std::vector<Vec2>& p) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) a += cross(p[i], p[(i + 1) % p.size()]);
+  return 0.5 * a;
+}
+
 bool polygon_contains(const std::vector<Vec2>& poly, Vec2 p) {
   bool inside = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {

@@ -15,6 +15,9 @@ struct Segment {
 /// Even-odd point-in-polygon test.
 bool polygon_contains(const std::vector<Vec2>& polygon, Vec2 p);
 
+/// Area of a polygon, positive when its corners run counter-clockwise (shoelace formula).
+double signed_area(const std::vector<Vec2>& polygon);
+
 /// Distance from p to the segment [a, b].
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
 

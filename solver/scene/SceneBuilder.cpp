@@ -392,10 +392,7 @@ Scene build_scene(const CaseSpec& spec) {
                 nw + static_cast<std::int64_t>(body_ghost_end)};
     b.rows = {body_rows_begin, body_rows_end};
     b.outline = spec.walls[spec.body->wall].points;
-    for (std::size_t k = 0; k < b.outline.size(); ++k) {
-      b.area += 0.5 * cross(b.outline[k], b.outline[(k + 1) % b.outline.size()]);
-    }
-    b.area = std::abs(b.area);
+    b.area = std::abs(signed_area(b.outline));
     scene.body = std::move(b);
   }
   return scene;

@@ -130,7 +130,7 @@ const double* Simulation::gradient_input() {
 }
 
 template <class Scheme>
-BodyForce Simulation::body_force(const double* input) const {
+BodyForce Simulation::body_force(const double* input) {
   // Fluid particle i gets -grad p / rho and the viscous acceleration from the body's particles
   // (the part of its sums over them); the body gets minus that times i's mass rho DL^2.
   const ParticleSet& ps = scene_.particles;
@@ -138,7 +138,7 @@ BodyForce Simulation::body_force(const double* input) const {
   const ParticleState& t = ps.next;
   const bool viscous = viscosity_.nu > 0.0 || artificial_viscosity_.alpha > 0.0;
   Vec2 gradient, acceleration;
-  std::vector<std::int32_t> part;
+  std::vector<std::int32_t>& part = body_part_;
   for (const std::int32_t i : near_body_) {
     const IdRange nb = neighbours_.of(i);
     part.clear();

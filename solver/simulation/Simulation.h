@@ -86,7 +86,7 @@ class Simulation {
   template <class Scheme>
   const double* gradient_input();  // p, or p/n^2 for the variational gradient
   template <class Scheme>
-  BodyForce body_force(const double* input) const;  // reaction of the body's pair forces
+  BodyForce body_force(const double* input);  // reaction of the body's pair forces
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();
     return (j >= b.walls.first && j < b.walls.second) ||
@@ -140,6 +140,7 @@ class Simulation {
   BodyForce body_force_next_;            // of the step in progress
   double body_built_s_ = 0.0;            // its S at the last build of the lists
   std::vector<std::int32_t> near_body_;  // fluid particles with body particles in their lists
+  std::vector<std::int32_t> body_part_;  // scratch: the body particles in one list
   std::vector<BodySample> body_history_;
 };
 
