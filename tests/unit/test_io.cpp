@@ -15,8 +15,11 @@
 
 #include "core/Error.h"
 #include "io/AtomicFile.h"
+#include "io/BodyCsv.h"
 #include "io/RunDirectory.h"
+#include "io/RunSummary.h"
 #include "io/VtpSeriesWriter.h"
+#include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
 #include "support/TestSupport.h"
@@ -97,6 +100,60 @@ TEST(VtpSeriesWriter, FramesReadBackWithEveryFieldAndTheirTimes) {
   for (const auto& e : fs::directory_iterator(dir)) {
     EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << "left over: " << e.path();
   }
+}
+
+// A case with a moving body: each frame carries its outline where the body is, block.csv a
+// line per step, run.json the body's state and the case's sections.
+TEST(VtpSeriesWriter, BodyOutlineBlockCsvAndSections) {
+  CaseSpec spec = parse_case_text(test::minimal_case_text() + R"(
+[[wall]]
+rectangle = { min = [0.05, 0.02], max = [0.15, 0.10] }
+
+[[section]]
+name = "S1"
+point = [0.1, 0.1]
+direction = [0.0, 1.0]
+)",
+                                  "body.toml");
+  BodySpec body;
+  body.wall = 1;
+  body.density = 2000.0;
+  body.downslope = {1.0, 0.0};
+  body.bed_normal = {0.0, 1.0};
+  body.motion.type = BodyMotionType::LnCosh;
+  body.motion.a0 = 5.0;
+  body.motion.ut = 1.0;
+  spec.body = body;
+  Simulation sim(spec, build_scene(spec));
+  const auto dir = test::scratch_dir("body");
+  VtpSeriesWriter writer(dir, spec);
+  sim.step(1.0);
+  sim.step(1.0);
+  writer.write_frame(sim);
+  const double s = LnCoshSlide{5.0, 1.0}.at(sim.time()).s;
+  ASSERT_GT(s, 0.0);
+  const auto frame = read_frame(dir / writer.entries()[0].file);
+  vtkFieldData* fd = frame->GetFieldData();
+  vtkDataArray* outline = fd->GetArray("BlockOutline");
+  ASSERT_NE(outline, nullptr);
+  ASSERT_EQ(outline->GetNumberOfTuples(), 4);
+  EXPECT_NEAR(outline->GetComponent(0, 0), 0.05 + s, 1e-12);  // first corner (min), moved by S
+  EXPECT_NEAR(outline->GetComponent(0, 1), 0.02, 1e-12);
+  EXPECT_NEAR(fd->GetArray("BlockS")->GetTuple1(0), s, 1e-12);
+
+  write_body_csv(dir / RunFiles::kBody, sim.body_history());
+  std::istringstream csv(read_text(dir / RunFiles::kBody));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("time_s,S_m,U_m_s,A_m_s2,", 0), 0u) << line;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 3);  // t = 0 and two steps
+
+  const auto j = summarize(spec, sim, RunStats{}, std::nullopt).to_json();
+  EXPECT_NEAR(j["block"]["S"].get<double>(), s, 1e-12);
+  ASSERT_EQ(j["sections"].size(), 1u);
+  EXPECT_EQ(j["sections"][0]["name"], "S1");
 }
 
 TEST(VtpSeriesWriter, WritesOnlyTheFieldsAndParticleKindsAskedFor) {
