@@ -1,0 +1,105 @@
+#include "vtkMPSKernel.h"
+
+#include <cmath>
+
+#include "operators/Kernel.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkMPSKernel);
+
+vtkMPSKernel::vtkMPSKernel() : Correction(LINEAR), MinimumConditioning(0.05) {
+  // re = 3.5 DL at the study's DL = 0.005 m; the filters set it from each frame's "re".
+  this->Radius = 0.0175;
+  this->KernelFootprint = RADIUS;
+  this->NormalizeWeights = true;
+}
+
+double vtkMPSKernel::Weight(double r, double re) {
+  return wcmps::Kernel{re}(r);
+}
+
+double vtkMPSKernel::PlaneIntegral(double re) {
+  // int_0^re (1 - r/re)^3 2 pi r dr = 2 pi re^2 * B(2, 4) = 2 pi re^2 / 20.
+  return vtkMath::Pi() * re * re / 10.0;
+}
+
+vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleArray* prob,
+                                       vtkDoubleArray* weights) {
+  double weightSum = 0.0;
+  return this->ComputeWeights(x, pIds, prob, weights, &weightSum);
+}
+
+vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleArray* prob,
+                                       vtkDoubleArray* weights, double* weightSum) {
+  const vtkIdType n = pIds->GetNumberOfIds();
+  weights->SetNumberOfTuples(n);
+  double* phi = weights->GetPointer(0);
+  const double* p = prob ? prob->GetPointer(0) : nullptr;
+  const wcmps::Kernel w{this->Radius};
+
+  // First pass: the weights and their zeroth and first moments.
+  double s = 0.0, raw = 0.0, mx = 0.0, my = 0.0;
+  double xj[3];
+  for (vtkIdType k = 0; k < n; ++k) {
+    this->DataSet->GetPoint(pIds->GetId(k), xj);
+    const double dx = xj[0] - x[0], dy = xj[1] - x[1];
+    const double wk = w(std::sqrt(dx * dx + dy * dy));
+    raw += wk;
+    phi[k] = p ? wk * p[k] : wk;
+    s += phi[k];
+    mx += phi[k] * dx;
+    my += phi[k] * dy;
+  }
+  *weightSum = raw;
+  if (s <= 0.0) {
+    return 0;
+  }
+
+  bool linear = this->Correction == LINEAR && n >= 3;
+  double cxx = 0.0, cxy = 0.0, cyy = 0.0;
+  const double bx = mx / s, by = my / s;
+  if (linear) {
+    for (vtkIdType k = 0; k < n; ++k) {
+      this->DataSet->GetPoint(pIds->GetId(k), xj);
+      const double ex = xj[0] - x[0] - bx, ey = xj[1] - x[1] - by;
+      cxx += phi[k] * ex * ex;
+      cxy += phi[k] * ex * ey;
+      cyy += phi[k] * ey * ey;
+    }
+    cxx /= s;
+    cxy /= s;
+    cyy /= s;
+    // Eigenvalues of the symmetric 2x2 C.
+    const double mean = 0.5 * (cxx + cyy);
+    const double dev = std::sqrt(0.25 * (cxx - cyy) * (cxx - cyy) + cxy * cxy);
+    const double lmax = mean + dev, lmin = mean - dev;
+    linear = lmax > 0.0 && lmin >= this->MinimumConditioning * lmax;
+  }
+
+  if (linear) {
+    // g = C^-1 dbar, then phi_j = W_j / S (1 - g . (d_j - dbar)).
+    const double det = cxx * cyy - cxy * cxy;
+    const double gx = (cyy * bx - cxy * by) / det;
+    const double gy = (cxx * by - cxy * bx) / det;
+    for (vtkIdType k = 0; k < n; ++k) {
+      this->DataSet->GetPoint(pIds->GetId(k), xj);
+      const double ex = xj[0] - x[0] - bx, ey = xj[1] - x[1] - by;
+      phi[k] = phi[k] / s * (1.0 - gx * ex - gy * ey);
+    }
+  } else if (this->NormalizeWeights) {
+    for (vtkIdType k = 0; k < n; ++k) {
+      phi[k] /= s;
+    }
+  }
+  return n;
+}
+
+void vtkMPSKernel::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Correction: " << (this->Correction == LINEAR ? "Linear" : "Shepard") << "\n";
+  os << indent << "MinimumConditioning: " << this->MinimumConditioning << "\n";
+}
