@@ -1,5 +1,6 @@
 /// @file main.cpp
-/// @brief The wcmps command-line program: `wcmps run`, `wcmps check`, `wcmps --version`.
+/// @brief The wcmps command-line program: `wcmps run`, `wcmps check`, `wcmps post`,
+/// `wcmps --version`.
 
 #include <vtkObject.h>
 
@@ -10,6 +11,7 @@
 
 #include "app/Commands.h"
 #include "app/ExitCodes.h"
+#include "app/Post.h"
 #include "core/Version.h"
 
 int main(int argc, char** argv) {
@@ -50,6 +52,23 @@ int main(int argc, char** argv) {
                                        "without running it");
   check_cmd->add_option("case", check_file, "case file (TOML)")->required();
 
+  wcmps::PostOptions post;
+  std::vector<double> post_times;
+  int post_threads = 0;
+  auto* post_cmd = app.add_subcommand("post",
+                                      "Compute what a run's case asks for in [post] (grids, "
+                                      "sections, section averages, free surface, lines)");
+  post_cmd->add_option("run", post.run_dir, "run directory (written by `wcmps run`)")->required();
+  post_cmd->add_option("-o,--output", post.output_dir, "output directory (default: RUN/post)");
+  auto* times_opt = post_cmd
+                        ->add_option("--times", post_times,
+                                     "times (s), comma-separated (default: [post] times, else "
+                                     "the [output] times)")
+                        ->delimiter(',');
+  auto* post_thr_opt =
+      post_cmd->add_option("--threads", post_threads, "number of threads (default: all cores)")
+          ->check(CLI::Range(1, 1024));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -63,6 +82,11 @@ int main(int argc, char** argv) {
       if (*settle_opt) run.settle_time = settle_time;
       if (*thr_opt) run.threads = threads;
       return wcmps::run_command(run);
+    }
+    if (*post_cmd) {
+      if (*times_opt) post.times = post_times;
+      if (*post_thr_opt) post.threads = post_threads;
+      return wcmps::post_command(post);
     }
     return wcmps::check_command(check_file);
   } catch (const std::exception& e) {

@@ -414,6 +414,81 @@ void read_block(TableReader& r, CaseSpec& c) {
   c.body = body;
 }
 
+/// [post]: what `wcmps post` computes, and how.
+PostSpec read_post(TableReader& r, const CaseSpec& c) {
+  PostSpec p;
+  static const std::pair<const char*, PostProduct> kProducts[] = {
+      {"grid", PostProduct::Grid},
+      {"sections", PostProduct::Sections},
+      {"section_averages", PostProduct::SectionAverages},
+      {"free_surface", PostProduct::FreeSurface},
+      {"lines", PostProduct::Lines}};
+  if (const toml::array* a = r.array("products")) {
+    for (const auto& e : *a) {
+      const auto name = e.value<std::string>();
+      std::optional<PostProduct> found;
+      std::string list;
+      for (const auto& [key, product] : kProducts) {
+        if (name && *name == key) found = product;
+        list += (list.empty() ? "" : ", ") + std::string(key);
+      }
+      if (!found) {
+        r.fail(e, "products",
+               "unknown product " + (name ? "\"" + *name + "\"" : type_name(e)) +
+                   " (products: " + list + ")");
+      }
+      if (*found == PostProduct::Sections && c.sections.empty()) {
+        r.fail(e, "products", "\"sections\" needs [[section]] tables");
+      }
+      if ((*found == PostProduct::SectionAverages || *found == PostProduct::Lines) && !c.block) {
+        r.fail(e, "products", "\"" + *name + "\" is measured along the block: it needs a [block]");
+      }
+      p.products.push_back(*found);
+    }
+  }
+  if (const toml::array* a = r.array("times")) {
+    for (const auto& e : *a) {
+      const double t = r.number_value(e, "times", 0.0, c.end_time, false, false);
+      if (!p.times.empty() && t <= p.times.back()) {
+        r.fail(e, "times", "must be increasing (" + fmt(t) + " after " + fmt(p.times.back()) + ")");
+      }
+      p.times.push_back(t);
+    }
+  }
+  p.grid_spacing = r.number("grid_spacing", 0.0, 0.0, kInf);
+  if (const toml::array* a = r.array("grid_fields")) {
+    for (const auto& e : *a) {
+      const auto name = e.value<std::string>();
+      if (!name) r.fail(e, "grid_fields", "expected field names, got " + type_name(e));
+      p.grid_fields.push_back(*name);
+    }
+  }
+  p.corrected_gradient = r.choice("vorticity", "mps", {"mps", "corrected"}) == "corrected";
+  p.section_samples = static_cast<int>(r.integer("section_samples", 51, 2, 100000));
+  p.average_max_x_over_l = r.number("average_max_x_over_l", 3.5, 0.0, kInf, true);
+  p.average_stations = static_cast<int>(r.integer("average_stations", 36, 2, 100000));
+  p.surface_spacing = r.number("surface_spacing", 0.0, 0.0, kInf);
+  if (const toml::array* a = r.array("lines")) {
+    for (const auto& e : *a) {
+      const auto name = e.value<std::string>();
+      const auto dash = name ? name->find('-') : std::string::npos;
+      const auto ok = [](const std::string& k) {
+        return k == "C" || k == "A" || k == "G" || k == "B" || k == "F";
+      };
+      if (!name || dash == std::string::npos || !ok(name->substr(0, dash)) ||
+          !ok(name->substr(dash + 1)) || name->substr(0, dash) == name->substr(dash + 1)) {
+        r.fail(e, "lines",
+               "expected \"P-Q\" with P and Q two of the block's points C, A, G, B, F "
+               "(e.g. \"C-A\")");
+      }
+      p.lines.emplace_back(name->substr(0, dash), name->substr(dash + 1));
+    }
+  }
+  if (p.wants(PostProduct::Lines) && p.lines.empty()) p.lines.emplace_back("C", "A");
+  r.finish();
+  return p;
+}
+
 /// [[section]]: a measuring line through a point (or a corner of the block), moved along the
 /// bed by `along_bed`, normal to the bed unless a direction is given.
 SectionSpec read_section(TableReader& r, const CaseSpec& c) {
@@ -629,6 +704,11 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
   tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
   tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });
   tables("section", [&](TableReader& r) { c.sections.push_back(read_section(r, c)); });
+  if (const toml::node* n = root.get("post")) {
+    if (!n->is_table()) root.fail(*n, "post", "expected a table [post]");
+    TableReader r(*n->as_table(), "[post]", path);
+    c.post = read_post(r, c);
+  }
   root.finish();
 
   if (c.fluids.empty()) throw CaseError(c.file, "the case has no [[fluid]] region or [tank]");

@@ -104,6 +104,31 @@ struct SectionSpec {
   SourceLocation where;
 };
 
+/// What `wcmps post` computes from a run ([post]; nothing unless asked).
+enum class PostProduct { Grid, Sections, SectionAverages, FreeSurface, Lines };
+
+struct PostSpec {
+  std::vector<PostProduct> products;
+  std::vector<double> times;             ///< s; empty: the [output] times
+  double grid_spacing = 0.0;             ///< m; 0: DL
+  std::vector<std::string> grid_fields;  ///< empty: every floating-point field
+  bool corrected_gradient = false;       ///< vorticity with the renormalised gradient
+  int section_samples = 51;
+  double average_max_x_over_l = 3.5;
+  int average_stations = 36;
+  double surface_spacing = 0.0;  ///< m; 0: DL
+  /// Polylines between two points of the block, named by its corners (C, A, G) or the
+  /// midpoints B (of CA) and F (of AG), e.g. {"C", "A"}; they move with the block.
+  std::vector<std::pair<std::string, std::string>> lines;
+
+  bool wants(PostProduct p) const {
+    for (const auto q : products) {
+      if (q == p) return true;
+    }
+    return false;
+  }
+};
+
 enum class NegativePressure { Zero, Keep };
 
 struct CaseSpec {
@@ -170,6 +195,7 @@ struct CaseSpec {
   std::optional<BlockSpec> block;  ///< already added to the walls
   std::optional<BodySpec> body;    ///< the wall that moves as a rigid body (the block's)
   std::vector<SectionSpec> sections;
+  PostSpec post;
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 

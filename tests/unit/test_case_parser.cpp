@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -327,6 +328,38 @@ TEST(CaseParser, BlockMotionAndSections) {
   expect_error(replace(table, "at = \"C\"", "at = \"Z\""), 28, "[[section]] #1 at");
   expect_error(replace(table, "name = \"P\"", "name = \"D\""), 31, "is used by another section");
   expect_error(replace(table, "point = [0.5, -0.3]\n", ""), 30, "give exactly one of point");
+}
+
+TEST(CaseParser, PostProducts) {
+  const std::string block =
+      study_block_case(40.0, 0.1005, 2928.0) + "\n[[section]]\nname = \"C\"\nat = \"C\"\n";
+  // Nothing by default.
+  EXPECT_TRUE(parse_case_text(block, "p.toml").post.products.empty());
+  const std::string post = block +
+                           "\n[post]\nproducts = [\"grid\", \"sections\", \"lines\"]\n"
+                           "grid_spacing = 0.002\nvorticity = \"corrected\"\n";
+  const CaseSpec c = parse_case_text(post, "p.toml");
+  EXPECT_TRUE(c.post.wants(PostProduct::Grid));
+  EXPECT_TRUE(c.post.wants(PostProduct::Sections));
+  EXPECT_FALSE(c.post.wants(PostProduct::FreeSurface));
+  EXPECT_DOUBLE_EQ(c.post.grid_spacing, 0.002);
+  EXPECT_TRUE(c.post.corrected_gradient);
+  // "lines" without lines: the block's top, C to A.
+  ASSERT_EQ(c.post.lines.size(), 1u);
+  EXPECT_EQ(c.post.lines[0].first, "C");
+  EXPECT_EQ(c.post.lines[0].second, "A");
+  const auto n = static_cast<std::uint32_t>(std::count(block.begin(), block.end(), '\n'));
+  expect_error(replace(post, "\"lines\"]", "\"contours\"]"), n + 3,
+               "[post] products: unknown product \"contours\"");
+  expect_error(replace(post, "grid_spacing = 0.002", "grid_spacing = -1"), n + 4,
+               "[post] grid_spacing: value -1 is out of range");
+  expect_error(post + "lines = [\"C-Z\"]\n", n + 6, "[post] lines: expected \"P-Q\"");
+  expect_error(post + "colour = 1\n", n + 6, "unknown key 'colour' in [post]");
+  // Products measured along the block need one; sections need [[section]]s.
+  expect_error(test::minimal_case_text() + "\n[post]\nproducts = [\"section_averages\"]\n", 0,
+               "needs a [block]");
+  expect_error(test::minimal_case_text() + "\n[post]\nproducts = [\"sections\"]\n", 0,
+               "needs [[section]] tables");
 }
 
 }  // namespace
