@@ -197,7 +197,7 @@ int post_command(const PostOptions& o) {
   const bool smp = vtkSMPTools::SetBackend("STDThread");
   vtkSMPTools::Initialize(threads);
 
-  const fs::path out = o.output_dir.empty() ? run / "post" : fs::path(o.output_dir);
+  const fs::path out = o.output_dir.empty() ? run / RunFiles::kPost : fs::path(o.output_dir);
   fs::create_directories(out, ec);
   if (ec || !fs::is_directory(out)) {
     std::cerr << "wcmps: error: " << out.string() << ": cannot create the output directory\n";

@@ -15,7 +15,7 @@ bool is_run_file(const fs::path& name) {
   auto starts = [&](const std::string& p) { return s.rfind(p, 0) == 0; };
   if (s.find(".tmp-") != std::string::npos) return true;
   return s == RunFiles::kSeries || s == RunFiles::kSummary || s == RunFiles::kLog ||
-         s == RunFiles::kCase || s == RunFiles::kBody ||
+         s == RunFiles::kCase || s == RunFiles::kBody || s == RunFiles::kPost ||
          (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
 }
 
@@ -40,7 +40,7 @@ void prepare_run_directory(const fs::path& dir, bool overwrite) {
                     " holds an earlier run; pass --overwrite to replace it");
     }
     for (const auto& f : run_files) {
-      fs::remove(f, ec);
+      fs::remove_all(f, ec);
       if (ec) throw IoError("cannot remove " + f.string() + ": " + ec.message());
     }
   } else {

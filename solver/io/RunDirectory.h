@@ -14,6 +14,8 @@ struct RunFiles {
   static constexpr const char* kCase = "case.toml";
   static constexpr const char* kFramePrefix = "frame_";
   static constexpr const char* kBody = "block.csv";
+  /// The directory `wcmps post` writes by default: derived from the run, replaced with it.
+  static constexpr const char* kPost = "post";
 };
 
 /// Makes `dir` ready for a new run. A missing directory is created; an empty one is used. One
@@ -22,7 +24,8 @@ struct RunFiles {
 /// IoError naming the directory and the reason; checks that it is writable.
 void prepare_run_directory(const std::filesystem::path& dir, bool overwrite);
 
-/// True for the names a run writes (series, summary, log, case copy, frames, temporaries).
+/// True for the names a run writes (series, summary, log, case copy, frames, temporaries) and
+/// for the post directory made from it.
 bool is_run_file(const std::filesystem::path& name);
 
 }  // namespace wcmps
