@@ -159,7 +159,9 @@ int post_command(const PostOptions& o) {
   CaseSpec spec;
   std::vector<SeriesEntry> series;
   try {
-    spec = parse_case_file(case_copy.string());
+    // Another case file may ask for other products of the same run (its scene is not rebuilt:
+    // the frames are the run's).
+    spec = parse_case_file(o.case_file.empty() ? case_copy.string() : o.case_file);
     series = read_series(pvd);
   } catch (const CaseError& e) {
     std::cerr << "wcmps: error: " << e.what() << '\n';

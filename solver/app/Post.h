@@ -12,6 +12,7 @@ namespace wcmps {
 struct PostOptions {
   std::string run_dir;
   std::string output_dir;                    ///< empty: RUN_DIR/post
+  std::string case_file;                     ///< empty: the run's copy, RUN_DIR/case.toml
   std::optional<std::vector<double>> times;  ///< s; default [post] times, else [output] times
   std::optional<int> threads;
 };

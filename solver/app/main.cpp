@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
                                       "sections, section averages, free surface, lines)");
   post_cmd->add_option("run", post.run_dir, "run directory (written by `wcmps run`)")->required();
   post_cmd->add_option("-o,--output", post.output_dir, "output directory (default: RUN/post)");
+  post_cmd->add_option("--case", post.case_file,
+                       "take [post] and the sections from this case file instead of the run's "
+                       "copy (RUN/case.toml)");
   auto* times_opt = post_cmd
                         ->add_option("--times", post_times,
                                      "times (s), comma-separated (default: [post] times, else "
