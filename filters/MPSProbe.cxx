@@ -1,5 +1,7 @@
 #include "MPSProbe.h"
 
+#include "operators/WaterSpan.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,7 +20,7 @@
 namespace wcmps_filters {
 
 ParticleProbe::ParticleProbe(vtkPolyData* fluid, double dl, double re, int correction)
-    : Fluid(fluid), DL(dl), Re(re), CoverageScale(dl * dl / vtkMPSKernel::PlaneIntegral(re)) {
+    : Fluid(fluid), DL(dl), Re(re), CoverageScale(wcmps::coverage_scale(dl, re)) {
   this->Locator->SetDataSet(fluid);
   this->Locator->BuildLocator();
   this->Kernel->SetRadius(re);

@@ -22,6 +22,7 @@
 #include "scene/SceneBuilder.h"
 #include "simulation/Runner.h"
 #include "simulation/Simulation.h"
+#include "simulation/WaveGauges.h"
 
 namespace fs = std::filesystem;
 
@@ -57,16 +58,25 @@ std::string progress_line(const Progress& p) {
   return buf;
 }
 
-/// Writes frames through the series writer and notes each in the log.
+/// Writes frames through the series writer and notes each in the log; samples the wave gauges
+/// (if any) after every step, and rewrites block.csv and gauges.csv with every frame.
 class LoggedSink : public FrameSink {
  public:
-  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log, fs::path body_csv)
-      : writer_(writer), log_(log), body_csv_(std::move(body_csv)) {}
+  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log, const fs::path& dir, WaveGauges* gauges)
+      : writer_(writer),
+        log_(log),
+        body_csv_(dir / RunFiles::kBody),
+        gauges_csv_(dir / RunFiles::kGauges),
+        gauges_(gauges) {}
+  void after_step(const Simulation& sim) override {
+    if (gauges_ && gauges_->due(sim.time())) gauges_->sample(sim);
+  }
   void write_frame(const Simulation& sim) override {
     const std::size_t before = writer_.entries().size();
     writer_.write_frame(sim);
     if (writer_.entries().size() == before) return;
     if (sim.body()) write_body_csv(body_csv_, sim.body_history());
+    if (gauges_) write_file_atomically(gauges_csv_, gauges_->csv());
     char buf[160];
     std::snprintf(buf, sizeof buf, "frame %-5zu t = %-10.6g step %-8lld dt %.4g s  %s", before,
                   sim.time(), static_cast<long long>(sim.steps()), sim.last_dt(),
@@ -78,6 +88,8 @@ class LoggedSink : public FrameSink {
   VtpSeriesWriter& writer_;
   std::ofstream& log_;
   fs::path body_csv_;
+  fs::path gauges_csv_;
+  WaveGauges* gauges_;
 };
 
 void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
@@ -203,9 +215,12 @@ int run_command(const RunOptions& o) {
     log << "wcmps " << kVersion << " run of " << spec.file.file << '\n';
     print_scene(log, spec, *scene);
     log << "threads             " << thread_count() << '\n' << std::flush;
+    const Vec2 lo = scene->domain_lo, hi = scene->domain_hi;
     sim.emplace(spec, std::move(*scene));
     VtpSeriesWriter writer(dir, spec);
-    LoggedSink sink(writer, log, dir / RunFiles::kBody);
+    std::optional<WaveGauges> gauges;
+    if (!spec.gauges.x.empty()) gauges.emplace(spec, lo, hi);
+    LoggedSink sink(writer, log, dir, gauges ? &*gauges : nullptr);
     Runner runner(*sim, output_times(spec, spec.end_time), spec.end_time);
     std::size_t shown = 0;
     auto progress = [&](const Progress& p) {

@@ -15,8 +15,8 @@ bool is_run_file(const fs::path& name) {
   auto starts = [&](const std::string& p) { return s.rfind(p, 0) == 0; };
   if (s.find(".tmp-") != std::string::npos) return true;
   return s == RunFiles::kSeries || s == RunFiles::kSummary || s == RunFiles::kLog ||
-         s == RunFiles::kCase || s == RunFiles::kBody || s == RunFiles::kPost ||
-         (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
+         s == RunFiles::kCase || s == RunFiles::kBody || s == RunFiles::kGauges ||
+         s == RunFiles::kPost || (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
 }
 
 void prepare_run_directory(const fs::path& dir, bool overwrite) {

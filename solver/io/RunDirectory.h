@@ -14,6 +14,7 @@ struct RunFiles {
   static constexpr const char* kCase = "case.toml";
   static constexpr const char* kFramePrefix = "frame_";
   static constexpr const char* kBody = "block.csv";
+  static constexpr const char* kGauges = "gauges.csv";
   /// The directory `wcmps post` writes by default: derived from the run, replaced with it.
   static constexpr const char* kPost = "post";
 };

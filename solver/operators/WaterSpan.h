@@ -8,7 +8,19 @@
 /// there may be several wet stretches (a splash above the surface, a film under the block);
 /// the water column is taken to be the longest one.
 
+#include <cmath>
+
 namespace wcmps {
+
+/// The coverage on the edge of the water: the continuum value on the edge of a half-plane.
+inline constexpr double kWaterEdgeCoverage = 0.5;
+
+/// Coverage = (sum of W over the fluid particles) times this: W integrates to pi re^2 / 10
+/// over the plane (W = (1 - r/re)^3), and particles of area DL^2 in the bulk sum to that over
+/// DL^2 on average, so the coverage is 1 in the bulk.
+inline double coverage_scale(double dl, double re) {
+  return dl * dl / (std::acos(-1.0) * re * re / 10.0);
+}
 
 struct WaterSpan {
   bool found = false;

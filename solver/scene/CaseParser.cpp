@@ -704,6 +704,16 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
   tables("fluid", [&](TableReader& r) { c.fluids.push_back(read_fluid(r)); });
   tables("wall", [&](TableReader& r) { c.walls.push_back(read_wall(r)); });
   tables("section", [&](TableReader& r) { c.sections.push_back(read_section(r, c)); });
+  if (const toml::node* n = root.get("gauges")) {
+    if (!n->is_table()) root.fail(*n, "gauges", "expected a table [gauges]");
+    TableReader r(*n->as_table(), "[gauges]", path);
+    const toml::array* a = r.array("x");
+    if (!a || a->empty()) throw CaseError(r.where(), "[gauges] x is required: the gauges' x (m)");
+    for (const auto& e : *a)
+      c.gauges.x.push_back(r.number_value(e, "x", -kInf, kInf, false, false));
+    c.gauges.interval = r.number("interval", std::nullopt, 0.0, c.end_time, true);
+    r.finish();
+  }
   if (const toml::node* n = root.get("post")) {
     if (!n->is_table()) root.fail(*n, "post", "expected a table [post]");
     TableReader r(*n->as_table(), "[post]", path);

@@ -129,6 +129,12 @@ struct PostSpec {
   }
 };
 
+/// Wave gauges ([gauges]): eta(t) at fixed x, sampled during the run into gauges.csv.
+struct GaugeSpec {
+  std::vector<double> x;  ///< m; none: no gauges
+  double interval = 0.0;  ///< s between samples
+};
+
 enum class NegativePressure { Zero, Keep };
 
 struct CaseSpec {
@@ -196,6 +202,7 @@ struct CaseSpec {
   std::optional<BodySpec> body;    ///< the wall that moves as a rigid body (the block's)
   std::vector<SectionSpec> sections;
   PostSpec post;
+  GaugeSpec gauges;
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 

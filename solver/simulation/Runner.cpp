@@ -76,12 +76,14 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
   try {
     sim_.settle();
     stats_.settle_seconds = wall();
+    sink.after_step(sim_);
     write_due();
     while (sim_.time() < end_ - tolerance) {
       const double stop = next < times_.size() ? std::min(times_[next], end_) : end_;
       sim_.step(stop);
       stats_.dt_min = std::min(stats_.dt_min, sim_.last_dt());
       stats_.dt_max = std::max(stats_.dt_max, sim_.last_dt());
+      sink.after_step(sim_);
       write_due();
       report(false);
     }

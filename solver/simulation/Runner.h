@@ -18,6 +18,8 @@ class FrameSink {
  public:
   virtual ~FrameSink() = default;
   virtual void write_frame(const Simulation& sim) = 0;
+  /// After settling (t = 0) and after every step, before any frame of that time.
+  virtual void after_step(const Simulation& /*sim*/) {}
 };
 
 /// Sorted output times: t = 0 if asked, every interval, each listed time, and the end time.

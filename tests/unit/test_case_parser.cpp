@@ -330,6 +330,22 @@ TEST(CaseParser, BlockMotionAndSections) {
   expect_error(replace(table, "point = [0.5, -0.3]\n", ""), 30, "give exactly one of point");
 }
 
+TEST(CaseParser, Gauges) {
+  const std::string base = test::minimal_case_text();
+  const auto n = static_cast<std::uint32_t>(std::count(base.begin(), base.end(), '\n'));
+  const CaseSpec c =
+      parse_case_text(base + "\n[gauges]\nx = [0.05, 0.1]\ninterval = 0.002\n", "g.toml");
+  ASSERT_EQ(c.gauges.x.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.gauges.interval, 0.002);
+  EXPECT_TRUE(parse_case_text(base, "g.toml").gauges.x.empty());
+  expect_error(base + "\n[gauges]\ninterval = 0.002\n", 0, "[gauges] x is required");
+  expect_error(base + "\n[gauges]\nx = [0.05]\n", 0, "[gauges] interval is required");
+  expect_error(base + "\n[gauges]\nx = [0.05]\ninterval = 0.0\n", n + 4,
+               "[gauges] interval: value 0 is out of range");
+  expect_error(base + "\n[gauges]\nx = [\"left\"]\ninterval = 0.002\n", n + 3,
+               "[gauges] x: expected a number");
+}
+
 TEST(CaseParser, PostProducts) {
   const std::string block =
       study_block_case(40.0, 0.1005, 2928.0) + "\n[[section]]\nname = \"C\"\nat = \"C\"\n";
