@@ -4,6 +4,7 @@
 
 #include "MPSFrame.h"
 #include "MPSProbe.h"
+#include "operators/WaterSpan.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -16,7 +17,7 @@
 
 vtkStandardNewMacro(vtkMPSFreeSurface);
 
-vtkMPSFreeSurface::vtkMPSFreeSurface() : Spacing(0.0), MinimumCoverage(0.5) {}
+vtkMPSFreeSurface::vtkMPSFreeSurface() : Spacing(0.0), MinimumCoverage(wcmps::kWaterEdgeCoverage) {}
 
 void vtkMPSFreeSurface::AddGauge(double x) {
   this->Gauges.push_back(x);

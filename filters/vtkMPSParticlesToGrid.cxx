@@ -6,6 +6,7 @@
 
 #include "MPSFrame.h"
 #include "MPSProbe.h"
+#include "operators/WaterSpan.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -23,7 +24,7 @@ vtkMPSParticlesToGrid::vtkMPSParticlesToGrid()
       SamplingBounds{1.0, -1.0, 1.0, -1.0, 0.0, 0.0},
       Radius(0.0),
       Correction(vtkMPSKernel::LINEAR),
-      MinimumCoverage(0.5),
+      MinimumCoverage(wcmps::kWaterEdgeCoverage),
       NullValue(std::numeric_limits<double>::quiet_NaN()) {}
 
 void vtkMPSParticlesToGrid::AddArrayName(const char* name) {

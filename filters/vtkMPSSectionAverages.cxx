@@ -6,6 +6,7 @@
 #include "MPSFrame.h"
 #include "MPSProbe.h"
 #include "MPSSections.h"
+#include "operators/WaterSpan.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -23,7 +24,7 @@ vtkMPSSectionAverages::vtkMPSSectionAverages()
       NumberOfStations(36),
       BedNormal{0.0, 0.0},
       NumberOfSamples(51),
-      MinimumCoverage(0.5) {}
+      MinimumCoverage(wcmps::kWaterEdgeCoverage) {}
 
 int vtkMPSSectionAverages::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");

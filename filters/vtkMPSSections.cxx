@@ -5,6 +5,7 @@
 #include "MPSFrame.h"
 #include "MPSProbe.h"
 #include "MPSSections.h"
+#include "operators/WaterSpan.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -17,7 +18,9 @@
 vtkStandardNewMacro(vtkMPSSections);
 
 vtkMPSSections::vtkMPSSections()
-    : NumberOfSamples(51), MinimumCoverage(0.5), Correction(vtkMPSKernel::LINEAR) {
+    : NumberOfSamples(51),
+      MinimumCoverage(wcmps::kWaterEdgeCoverage),
+      Correction(vtkMPSKernel::LINEAR) {
   this->SetNumberOfOutputPorts(2);
 }
 
