@@ -1,6 +1,7 @@
 #include "MPSFrame.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -69,8 +70,8 @@ vtkSmartPointer<vtkPolyData> ExtractFluid(vtkPolyData* frame,
     if (!src) {
       continue;
     }
-    vtkSmartPointer<vtkDataArray> dst;
-    dst.TakeReference(src->NewInstance());
+    // Doubles whatever the frame's type: the kernels sum them with double weights.
+    auto dst = vtkSmartPointer<vtkDoubleArray>::New();
     dst->SetName(src->GetName());
     dst->SetNumberOfComponents(src->GetNumberOfComponents());
     dst->SetNumberOfTuples(count);

@@ -26,7 +26,7 @@ double FrameRadius(vtkPolyData* frame, double given);
 std::vector<char> FluidMask(vtkPolyData* frame);
 
 /// The fluid particles of frame, with copies of the named point arrays (all floating-point
-/// arrays when names is empty). No cells: the kernels only need points.
+/// arrays when names is empty) as vtkDoubleArray. No cells: the kernels only need points.
 vtkSmartPointer<vtkPolyData> ExtractFluid(vtkPolyData* frame,
                                           const std::vector<std::string>& names);
 

@@ -82,8 +82,9 @@ struct ProbeWorker {
   double CoverageScale;
   double MinCoverage;
   double NullValue;
-  std::vector<vtkDataArray*> In;
-  std::vector<vtkDataArray*> Out;
+  std::vector<const double*> In;  // fluid arrays (doubles, ExtractFluid)
+  std::vector<double*> Out;
+  std::vector<int> Components;
   vtkDoubleArray* Coverage;
   vtkCharArray* Mask;
   vtkSMPThreadLocalObject<vtkIdList> Ids;
@@ -95,7 +96,6 @@ struct ProbeWorker {
     vtkIdList* ids = this->Ids.Local();
     vtkDoubleArray* weights = this->Weights.Local();
     double x[3];
-    std::vector<double> value;
     for (vtkIdType i = begin; i < end; ++i) {
       this->Points->GetPoint(i, x);
       x[2] = 0.0;
@@ -109,20 +109,16 @@ struct ProbeWorker {
       this->Coverage->SetValue(i, coverage);
       const bool valid = n > 0 && coverage >= this->MinCoverage;
       this->Mask->SetValue(i, valid ? 1 : 0);
+      const double* phi = weights->GetPointer(0);
       for (size_t a = 0; a < this->In.size(); ++a) {
-        const int nc = this->In[a]->GetNumberOfComponents();
-        value.assign(static_cast<size_t>(nc), valid ? 0.0 : this->NullValue);
-        if (valid) {
-          const double* phi = weights->GetPointer(0);
-          for (vtkIdType k = 0; k < n; ++k) {
-            const vtkIdType j = ids->GetId(k);
-            for (int c = 0; c < nc; ++c) {
-              value[static_cast<size_t>(c)] += phi[k] * this->In[a]->GetComponent(j, c);
-            }
-          }
-        }
-        for (int c = 0; c < nc; ++c) {
-          this->Out[a]->SetComponent(i, c, value[static_cast<size_t>(c)]);
+        const int nc = this->Components[a];
+        double* out = this->Out[a] + i * nc;
+        for (int c = 0; c < nc; ++c) out[c] = valid ? 0.0 : this->NullValue;
+        if (!valid) continue;
+        const double* in = this->In[a];
+        for (vtkIdType k = 0; k < n; ++k) {
+          const double* v = in + ids->GetId(k) * nc;
+          for (int c = 0; c < nc; ++c) out[c] += phi[k] * v[c];
         }
       }
     }
@@ -136,25 +132,28 @@ struct ProbeWorker {
 void ParticleProbe::Probe(vtkPoints* points, double minCoverage, double nullValue,
                           vtkPointData* out) const {
   const vtkIdType n = points->GetNumberOfPoints();
-  ProbeWorker worker{points,       this->Fluid, this->Locator,
-                     this->Kernel, this->Re,    this->CoverageScale,
-                     minCoverage,  nullValue,   {},
-                     {},           nullptr,     nullptr,
-                     {},           {}};
+  ProbeWorker worker;
+  worker.Points = points;
+  worker.Fluid = this->Fluid;
+  worker.Locator = this->Locator;
+  worker.Kernel = this->Kernel;
+  worker.Re = this->Re;
+  worker.CoverageScale = this->CoverageScale;
+  worker.MinCoverage = minCoverage;
+  worker.NullValue = nullValue;
   vtkPointData* in = this->Fluid->GetPointData();
   for (int a = 0; a < in->GetNumberOfArrays(); ++a) {
-    vtkDataArray* src = in->GetArray(a);
-    if (!src) {
-      continue;
-    }
+    auto* src = vtkDoubleArray::SafeDownCast(in->GetArray(a));
+    if (!src) continue;  // ExtractFluid makes every array a vtkDoubleArray
     // Interpolated values are weighted sums: double whatever the particles' type.
     vtkNew<vtkDoubleArray> dst;
     dst->SetName(src->GetName());
     dst->SetNumberOfComponents(src->GetNumberOfComponents());
     dst->SetNumberOfTuples(n);
     out->AddArray(dst);
-    worker.In.push_back(src);
-    worker.Out.push_back(dst);
+    worker.In.push_back(src->GetPointer(0));
+    worker.Out.push_back(dst->GetPointer(0));
+    worker.Components.push_back(src->GetNumberOfComponents());
   }
   vtkNew<vtkDoubleArray> coverage;
   coverage->SetName("coverage");
