@@ -25,6 +25,12 @@ double FrameRadius(vtkPolyData* frame, double given) {
   return given > 0.0 ? given : FieldValue(frame->GetFieldData(), "re", 0.0);
 }
 
+bool FrameScales(vtkPolyData* frame, double re_given, double* dl, double* re) {
+  *dl = FrameSpacing(frame, 0.0);
+  *re = FrameRadius(frame, re_given);
+  return *dl > 0.0 && *re > 0.0;
+}
+
 std::vector<char> FluidMask(vtkPolyData* frame) {
   const vtkIdType n = frame->GetNumberOfPoints();
   std::vector<char> fluid(static_cast<size_t>(n), 1);

@@ -22,6 +22,12 @@ double FieldValue(vtkFieldData* fd, const char* name, double fallback);
 double FrameSpacing(vtkPolyData* frame, double given);
 double FrameRadius(vtkPolyData* frame, double given);
 
+/// DL and re of a frame (re: re_given when positive); false if it has no positive DL or re,
+/// i.e. it is not a wcmps frame (the caller reports kNotAFrame).
+bool FrameScales(vtkPolyData* frame, double re_given, double* dl, double* re);
+inline constexpr const char* kNotAFrame =
+    "The frame has no DL or re field data: it is not a wcmps frame.";
+
 /// True for a point the "kind" array marks as fluid (0); every point when there is no "kind".
 std::vector<char> FluidMask(vtkPolyData* frame);
 

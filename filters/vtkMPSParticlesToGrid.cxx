@@ -108,15 +108,12 @@ int vtkMPSParticlesToGrid::RequestData(vtkInformation*, vtkInformationVector** i
   if (!input || !output) {
     return 0;
   }
-  const double dl = wcmps_filters::FrameSpacing(input, 0.0);
-  const double re = wcmps_filters::FrameRadius(input, this->Radius);
-  const double h = this->Spacing > 0.0 ? this->Spacing : dl;
-  if (dl <= 0.0 || re <= 0.0 || h <= 0.0) {
-    vtkErrorMacro(
-        "The frame has no DL or re field data and none was set: it is not a wcmps "
-        "frame, or set Spacing and Radius.");
+  double dl = 0.0, re = 0.0;
+  if (!wcmps_filters::FrameScales(input, this->Radius, &dl, &re)) {
+    vtkErrorMacro(<< wcmps_filters::kNotAFrame);
     return 0;
   }
+  const double h = this->Spacing > 0.0 ? this->Spacing : dl;
   vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, this->ArrayNames);
 
   double bounds[6];

@@ -34,10 +34,9 @@ int vtkMPSPolylineProbe::RequestData(vtkInformation*, vtkInformationVector** inp
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output) return 0;
-  const double dl = wcmps_filters::FrameSpacing(input, 0.0);
-  const double re = wcmps_filters::FrameRadius(input, 0.0);
-  if (dl <= 0.0 || re <= 0.0) {
-    vtkErrorMacro("The frame has no DL or re field data: it is not a wcmps frame.");
+  double dl = 0.0, re = 0.0;
+  if (!wcmps_filters::FrameScales(input, 0.0, &dl, &re)) {
+    vtkErrorMacro(<< wcmps_filters::kNotAFrame);
     return 0;
   }
   std::vector<double> corners = this->Points;

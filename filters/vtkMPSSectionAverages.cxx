@@ -36,13 +36,12 @@ int vtkMPSSectionAverages::RequestData(vtkInformation*, vtkInformationVector** i
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkTable* output = vtkTable::GetData(outputVector);
   if (!input || !output) return 0;
-  const double dl = wcmps_filters::FrameSpacing(input, 0.0);
-  const double re = wcmps_filters::FrameRadius(input, 0.0);
-  vtkDataArray* outline = input->GetFieldData()->GetArray("BlockOutline");
-  if (dl <= 0.0 || re <= 0.0) {
-    vtkErrorMacro("The frame has no DL or re field data: it is not a wcmps frame.");
+  double dl = 0.0, re = 0.0;
+  if (!wcmps_filters::FrameScales(input, 0.0, &dl, &re)) {
+    vtkErrorMacro(<< wcmps_filters::kNotAFrame);
     return 0;
   }
+  vtkDataArray* outline = input->GetFieldData()->GetArray("BlockOutline");
   if (!outline || outline->GetNumberOfTuples() < 3 || outline->GetNumberOfComponents() < 2) {
     vtkErrorMacro(
         "The frame has no BlockOutline field data (corners C, A, G): section "

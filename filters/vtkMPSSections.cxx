@@ -56,10 +56,9 @@ int vtkMPSSections::RequestData(vtkInformation*, vtkInformationVector** inputVec
   vtkPolyData* profiles = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summary = vtkTable::GetData(outputVector, 1);
   if (!input || !profiles || !summary) return 0;
-  const double dl = wcmps_filters::FrameSpacing(input, 0.0);
-  const double re = wcmps_filters::FrameRadius(input, 0.0);
-  if (dl <= 0.0 || re <= 0.0) {
-    vtkErrorMacro("The frame has no DL or re field data: it is not a wcmps frame.");
+  double dl = 0.0, re = 0.0;
+  if (!wcmps_filters::FrameScales(input, 0.0, &dl, &re)) {
+    vtkErrorMacro(<< wcmps_filters::kNotAFrame);
     return 0;
   }
   std::vector<wcmps_filters::SectionLine> lines;
