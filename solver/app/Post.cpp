@@ -250,7 +250,9 @@ int post_command(const PostOptions& o) {
           // One grid for every time: the box of all particles (the tank) at the first time.
           frame->GetBounds(grid_bounds);
         }
-        const double dl = frame->GetFieldData()->GetArray("DL")->GetComponent(0, 0);
+        vtkDataArray* dl_array = frame->GetFieldData()->GetArray("DL");
+        if (!dl_array) throw IoError(frame_file.string() + ": no DL field data: not a wcmps frame");
+        const double dl = dl_array->GetComponent(0, 0);
         grid->SetSpacing(post.grid_spacing > 0.0 ? post.grid_spacing : dl);
         grid->SetSamplingBounds(grid_bounds);
         for (const auto& f : post.grid_fields) grid->AddArrayName(f.c_str());
