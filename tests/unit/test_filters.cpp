@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -13,6 +14,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
 #include <vtkMPSFreeSurface.h>
 #include <vtkMPSKernel.h>
 #include <vtkMPSParticlesToGrid.h>
@@ -21,17 +23,20 @@
 #include <vtkMPSSections.h>
 #include <vtkMPSSpeedVorticity.h>
 #include <vtkNew.h>
+#include <vtkPVDReader.h>
 #include <vtkPointData.h>
 #include <vtkPointInterpolator.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticPointLocator.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include "operators/LatticeConstants.h"
 #include "scene/CaseParser.h"
@@ -660,6 +665,66 @@ TEST(WaveGauges, TheSolversGaugesEqualTheFiltersOnTheSameParticles) {
   EXPECT_EQ(gauges.csv().substr(0, gauges.csv().find('\n')),
             "time [s],eta at x = 0.05 m [m],eta at x = 0.1 m [m],eta at x = 0.15 m [m],"
             "eta at x = 0.5 m [m]");
+}
+
+TEST(Series, EveryFilterFollowsTheTimeRequestsOfAPvdReader) {
+  // Three frames whose water is 20, 22 and 24 DL deep, as series.pvd at t = 0, 0.1, 0.2.
+  const auto dir = wcmps::test::scratch_dir("filters_series");
+  std::string pvd =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+      "<Collection>\n";
+  for (int k = 0; k < 3; ++k) {
+    auto frame = lattice_frame(kBoxX, 20 + 2 * k, linear_u, linear_p);
+    const std::string name = "frame_" + std::to_string(k) + ".vtp";
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(frame);
+    w->SetDataModeToBinary();  // as wcmps writes frames (docs/running.md: appended data breaks)
+    w->SetFileName((dir / name).string().c_str());
+    ASSERT_EQ(w->Write(), 1);
+    pvd += "<DataSet timestep=\"" + std::to_string(0.1 * k) + "\" part=\"0\" file=\"" + name +
+           "\"/>\n";
+  }
+  pvd += "</Collection>\n</VTKFile>\n";
+  std::ofstream((dir / "series.pvd").string()) << pvd;
+
+  vtkNew<vtkPVDReader> reader;
+  reader->SetFileName((dir / "series.pvd").string().c_str());
+  reader->UpdateInformation();
+  vtkInformation* info = reader->GetOutputInformation(0);
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 3);
+
+  vtkNew<vtkMPSSpeedVorticity> sv;
+  sv->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkMPSParticlesToGrid> grid;
+  grid->SetInputConnection(sv->GetOutputPort());
+  vtkNew<vtkMPSSections> sections;
+  sections->SetInputConnection(reader->GetOutputPort());
+  sections->AddSection("V", 20 * kDl, 0.0, 0.0, 1.0);
+  vtkNew<vtkMPSFreeSurface> surface;
+  surface->SetInputConnection(reader->GetOutputPort());
+  surface->AddGauge(20 * kDl);
+  vtkNew<vtkMPSPolylineProbe> line;
+  line->SetInputConnection(reader->GetOutputPort());
+  line->AddPoint(5 * kDl, 5 * kDl);
+  line->AddPoint(15 * kDl, 5 * kDl);
+  for (int k = 0; k < 3; ++k) {
+    const double t = 0.1 * k, depth = (20 + 2 * k) * kDl;
+    grid->UpdateTimeStep(t);
+    surface->UpdateTimeStep(t);
+    sections->UpdateTimeStep(t);
+    line->UpdateTimeStep(t);
+    // Each output is the frame of its time: the grid's default box grows with the water,
+    // the gauge and the section's depth follow it.
+    int dims[3];
+    grid->GetOutput()->GetDimensions(dims);
+    EXPECT_EQ(dims[1], 20 + 2 * k + 1) << "t = " << t;
+    EXPECT_NE(grid->GetOutput()->GetPointData()->GetArray("vorticity"), nullptr);
+    EXPECT_NEAR(eta_at(surface->GetOutput(), 20 * kDl), depth, kEdgeTolerance) << "t = " << t;
+    EXPECT_NEAR(sections->GetSummary()->GetValueByName(0, "H").ToDouble(), depth, kEdgeTolerance);
+    EXPECT_EQ(line->GetOutput()->GetNumberOfPoints(), 101);
+    EXPECT_DOUBLE_EQ(surface->GetOutput()->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()),
+                     t);
+  }
 }
 
 }  // namespace
