@@ -459,7 +459,14 @@ PostSpec read_post(TableReader& r, const CaseSpec& c) {
   if (const toml::array* a = r.array("grid_fields")) {
     for (const auto& e : *a) {
       const auto name = e.value<std::string>();
-      if (!name) r.fail(e, "grid_fields", "expected field names, got " + type_name(e));
+      // The frames' floating-point fields, and what vtkMPSSpeedVorticity adds to them.
+      const bool known = name && (*name == "speed" || *name == "vorticity" || *name == "velocity" ||
+                                  *name == "pressure" || *name == "number_density");
+      if (!known) {
+        r.fail(e, "grid_fields",
+               "unknown field " + (name ? "\"" + *name + "\"" : type_name(e)) +
+                   " (fields: velocity, pressure, number_density, speed, vorticity)");
+      }
       p.grid_fields.push_back(*name);
     }
   }

@@ -370,6 +370,8 @@ TEST(CaseParser, PostProducts) {
   expect_error(replace(post, "grid_spacing = 0.002", "grid_spacing = -1"), n + 4,
                "[post] grid_spacing: value -1 is out of range");
   expect_error(post + "lines = [\"C-Z\"]\n", n + 6, "[post] lines: expected \"P-Q\"");
+  expect_error(post + "grid_fields = [\"speed\", \"temperature\"]\n", n + 6,
+               "[post] grid_fields: unknown field \"temperature\"");
   expect_error(post + "colour = 1\n", n + 6, "unknown key 'colour' in [post]");
   // Products measured along the block need one; sections need [[section]]s.
   expect_error(test::minimal_case_text() + "\n[post]\nproducts = [\"section_averages\"]\n", 0,
