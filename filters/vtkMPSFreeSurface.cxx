@@ -14,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 
 vtkStandardNewMacro(vtkMPSFreeSurface);
 
@@ -66,9 +67,16 @@ int vtkMPSFreeSurface::RequestData(vtkInformation*, vtkInformationVector** input
     if (run.size() >= 2) lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
     run.clear();
   };
+  // The stations are independent: scan them in parallel, then join them in order.
+  std::vector<wcmps_filters::ParticleProbe::Span> spans(stations.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(stations.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType k = b; k < e; ++k) {
+      const double p[2] = {stations[static_cast<size_t>(k)], 0.0}, up[2] = {0.0, 1.0};
+      spans[static_cast<size_t>(k)] = probe.LongestWaterSpan(p, up, this->MinimumCoverage);
+    }
+  });
   for (size_t k = 0; k < stations.size(); ++k) {
-    const double p[2] = {stations[k], 0.0}, up[2] = {0.0, 1.0};
-    const auto span = probe.LongestWaterSpan(p, up, this->MinimumCoverage);
+    const auto& span = spans[k];
     if (!span.found) {
       flush();
       continue;
