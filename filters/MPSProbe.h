@@ -45,9 +45,6 @@ class ParticleProbe {
   using Span = wcmps::WaterSpan;
   Span LongestWaterSpan(const double p[2], const double d[2], double threshold) const;
 
-  double Radius() const { return this->Re; }
-  double Spacing() const { return this->DL; }
-
  private:
   vtkPolyData* Fluid;
   double DL;

@@ -6,7 +6,6 @@
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
-#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 
 vtkStandardNewMacro(vtkMPSKernel);
@@ -20,11 +19,6 @@ vtkMPSKernel::vtkMPSKernel() : Correction(LINEAR), MinimumConditioning(0.05) {
 
 double vtkMPSKernel::Weight(double r, double re) {
   return wcmps::Kernel{re}(r);
-}
-
-double vtkMPSKernel::PlaneIntegral(double re) {
-  // int_0^re (1 - r/re)^3 2 pi r dr = 2 pi re^2 * B(2, 4) = 2 pi re^2 / 20.
-  return vtkMath::Pi() * re * re / 10.0;
 }
 
 vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleArray* prob,

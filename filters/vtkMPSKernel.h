@@ -87,12 +87,6 @@ class WCMPSFILTERS_EXPORT vtkMPSKernel : public vtkGeneralizedKernel {
    */
   static double Weight(double r, double re);
 
-  /**
-   * The integral of W over the plane, pi re^2 / 10: the weight sum of particles of area DL^2
-   * filling the plane is this over DL^2 on average, half of it on the edge of a half-plane.
-   */
-  static double PlaneIntegral(double re);
-
  protected:
   vtkMPSKernel();
   ~vtkMPSKernel() override = default;

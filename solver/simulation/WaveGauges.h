@@ -30,7 +30,6 @@ class WaveGauges {
   /// The samples so far: a header naming each gauge's x, then a row per sample.
   std::string csv() const;
 
-  const std::vector<double>& positions() const { return x_; }
   const std::vector<std::vector<double>>& rows() const { return rows_; }
 
  private:
