@@ -30,11 +30,7 @@ ParticleProbe::ParticleProbe(vtkPolyData* fluid, double dl, double re, int corre
 
 ParticleProbe::~ParticleProbe() = default;
 
-double ParticleProbe::Coverage(double x, double y) const {
-  if (this->Fluid->GetNumberOfPoints() == 0) {
-    return 0.0;
-  }
-  vtkNew<vtkIdList> ids;
+double ParticleProbe::Coverage(double x, double y, vtkIdList* ids) const {
   double p[3] = {x, y, 0.0};
   this->Locator->FindPointsWithinRadius(this->Re, p, ids);
   double s = 0.0, q[3];
@@ -65,8 +61,9 @@ ParticleProbe::Span ParticleProbe::LongestWaterSpan(const double p[2], const dou
     smax = std::min(smax, s_hi);
   }
   if (smin >= smax) return best;
+  vtkNew<vtkIdList> ids;
   const auto wet = [&](double s) {
-    return this->Coverage(p[0] + s * d[0], p[1] + s * d[1]) >= threshold;
+    return this->Coverage(p[0] + s * d[0], p[1] + s * d[1], ids) >= threshold;
   };
   return wcmps::longest_water_span(wet, smin, smax, 0.25 * this->DL, 1e-3 * this->DL);
 }

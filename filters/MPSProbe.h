@@ -13,6 +13,7 @@
 #include "vtkSmartPointer.h"
 
 class vtkDataArray;
+class vtkIdList;
 class vtkPointData;
 class vtkPoints;
 class vtkPolyData;
@@ -29,9 +30,6 @@ class ParticleProbe {
   ParticleProbe(const ParticleProbe&) = delete;
   ParticleProbe& operator=(const ParticleProbe&) = delete;
 
-  /// Coverage at (x, y): sum_j W DL^2 / (pi re^2 / 10) (see vtkMPSParticlesToGrid).
-  double Coverage(double x, double y) const;
-
   /// Interpolates at every point of points into new arrays of out (same names and component
   /// counts as the fluid's arrays), plus "coverage" and "vtkValidPointMask"; points with
   /// coverage below minCoverage get nullValue. Parallel over points (vtkSMPTools).
@@ -46,6 +44,10 @@ class ParticleProbe {
   Span LongestWaterSpan(const double p[2], const double d[2], double threshold) const;
 
  private:
+  /// Coverage at (x, y): sum_j W DL^2 / (pi re^2 / 10) (see vtkMPSParticlesToGrid); ids is
+  /// scratch for the neighbour search, so a scan of many points allocates nothing.
+  double Coverage(double x, double y, vtkIdList* ids) const;
+
   vtkPolyData* Fluid;
   double DL;
   double Re;
