@@ -69,9 +69,8 @@ vtkSmartPointer<vtkPolyData> ExtractFluid(vtkPolyData* frame,
   points->SetNumberOfPoints(count);
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->SetPoints(points);
-  const std::vector<std::string> wanted = names.empty() ? FloatingPointArrays(frame) : names;
   std::vector<std::pair<vtkDataArray*, vtkDataArray*>> copies;
-  for (const auto& name : wanted) {
+  for (const auto& name : names) {
     vtkDataArray* src = frame->GetPointData()->GetArray(name.c_str());
     if (!src) {
       continue;

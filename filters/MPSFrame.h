@@ -31,8 +31,9 @@ inline constexpr const char* kNotAFrame =
 /// True for a point the "kind" array marks as fluid (0); every point when there is no "kind".
 std::vector<char> FluidMask(vtkPolyData* frame);
 
-/// The fluid particles of frame, with copies of the named point arrays (all floating-point
-/// arrays when names is empty) as vtkDoubleArray. No cells: the kernels only need points.
+/// The fluid particles of frame, with copies of the named point arrays as vtkDoubleArray
+/// (FloatingPointArrays(frame) for all of them; none for the points alone). No cells: the
+/// kernels only need points.
 vtkSmartPointer<vtkPolyData> ExtractFluid(vtkPolyData* frame,
                                           const std::vector<std::string>& names);
 

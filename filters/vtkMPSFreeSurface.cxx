@@ -40,7 +40,7 @@ int vtkMPSFreeSurface::RequestData(vtkInformation*, vtkInformationVector** input
     vtkErrorMacro(<< wcmps_filters::kNotAFrame);
     return 0;
   }
-  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, {"velocity"});
+  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, {});
   const wcmps_filters::ParticleProbe probe(fluid, dl, re, vtkMPSKernel::LINEAR);
 
   std::vector<double> stations = this->Gauges;

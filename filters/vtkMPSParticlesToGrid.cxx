@@ -114,7 +114,9 @@ int vtkMPSParticlesToGrid::RequestData(vtkInformation*, vtkInformationVector** i
     return 0;
   }
   const double h = this->Spacing > 0.0 ? this->Spacing : dl;
-  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, this->ArrayNames);
+  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(
+      input,
+      this->ArrayNames.empty() ? wcmps_filters::FloatingPointArrays(input) : this->ArrayNames);
 
   double bounds[6];
   std::copy(this->SamplingBounds, this->SamplingBounds + 6, bounds);

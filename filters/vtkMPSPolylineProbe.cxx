@@ -79,7 +79,8 @@ int vtkMPSPolylineProbe::RequestData(vtkInformation*, vtkInformationVector** inp
     arc_length->InsertNextValue(s);
     arc_fraction->InsertNextValue(f);
   }
-  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, {});
+  vtkSmartPointer<vtkPolyData> fluid =
+      wcmps_filters::ExtractFluid(input, wcmps_filters::FloatingPointArrays(input));
   const wcmps_filters::ParticleProbe probe(fluid, dl, re, vtkMPSKernel::LINEAR);
   probe.Probe(points, this->MinimumCoverage, std::numeric_limits<double>::quiet_NaN(),
               output->GetPointData());

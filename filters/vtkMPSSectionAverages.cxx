@@ -74,7 +74,8 @@ int vtkMPSSectionAverages::RequestData(vtkInformation*, vtkInformationVector** i
     lines.push_back({name, {cx + q * (ax - cx), cy + q * (ay - cy)}, {n[0], n[1]}});
     xl.push_back(q);
   }
-  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, {});
+  vtkSmartPointer<vtkPolyData> fluid =
+      wcmps_filters::ExtractFluid(input, wcmps_filters::FloatingPointArrays(input));
   const wcmps_filters::ParticleProbe probe(fluid, dl, re, vtkMPSKernel::LINEAR);
   vtkNew<vtkTable> summary;
   wcmps_filters::SampleSections(probe, lines, this->NumberOfSamples, this->MinimumCoverage, nullptr,

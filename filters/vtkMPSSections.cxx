@@ -66,7 +66,8 @@ int vtkMPSSections::RequestData(vtkInformation*, vtkInformationVector** inputVec
     const double* l = &this->Lines[4 * k];
     lines.push_back({this->Names[k], {l[0], l[1]}, {l[2], l[3]}});
   }
-  vtkSmartPointer<vtkPolyData> fluid = wcmps_filters::ExtractFluid(input, {});
+  vtkSmartPointer<vtkPolyData> fluid =
+      wcmps_filters::ExtractFluid(input, wcmps_filters::FloatingPointArrays(input));
   const wcmps_filters::ParticleProbe probe(fluid, dl, re, this->Correction);
   wcmps_filters::SampleSections(probe, lines, this->NumberOfSamples, this->MinimumCoverage,
                                 profiles, summary);
