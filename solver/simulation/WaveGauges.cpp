@@ -18,7 +18,7 @@ WaveGauges::WaveGauges(const CaseSpec& spec, Vec2 lo, Vec2 hi)
       scale_(coverage_scale(spec.dl, spec.re())) {
   grid_.configure(lo, hi, spec.re());
   if (interval_ > 0.0) {
-    rows_.reserve(static_cast<std::size_t>(spec.end_time / interval_) + 2);
+    values_.reserve((static_cast<std::size_t>(spec.end_time / interval_) + 2) * width());
   }
 }
 
@@ -46,15 +46,14 @@ void WaveGauges::sample(const Simulation& sim) {
     ylo = std::min(ylo, py[k]);
     yhi = std::max(yhi, py[k]);
   }
-  std::vector<double> row{sim.time()};
+  values_.push_back(sim.time());
   for (const double x : x_) {
     const auto wet = [&](double y) { return coverage(px, py, x, y) >= kWaterEdgeCoverage; };
     const WaterSpan span =
         n > 0 ? longest_water_span(wet, ylo - w_.re, yhi + w_.re, 0.25 * dl_, 1e-3 * dl_)
               : WaterSpan{};
-    row.push_back(span.found ? span.s1 : std::numeric_limits<double>::quiet_NaN());
+    values_.push_back(span.found ? span.s1 : std::numeric_limits<double>::quiet_NaN());
   }
-  rows_.push_back(std::move(row));
   // The next sample: the first multiple of the interval after this time.
   next_ = interval_ > 0.0 ? (std::floor(sim.time() / interval_ + 1e-9) + 1.0) * interval_
                           : std::numeric_limits<double>::infinity();
@@ -68,8 +67,9 @@ std::string WaveGauges::csv() const {
     out += buf;
   }
   out += '\n';
-  for (const auto& row : rows_) {
-    for (std::size_t k = 0; k < row.size(); ++k) {
+  for (std::size_t r = 0; r < sample_count(); ++r) {
+    const double* row = sample_values(r);
+    for (std::size_t k = 0; k < width(); ++k) {
       std::snprintf(buf, sizeof buf, "%s%.9g", k ? "," : "", row[k]);
       out += buf;
     }

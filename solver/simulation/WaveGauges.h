@@ -30,7 +30,9 @@ class WaveGauges {
   /// The samples so far: a header naming each gauge's x, then a row per sample.
   std::string csv() const;
 
-  const std::vector<std::vector<double>>& rows() const { return rows_; }
+  /// Samples taken so far, and sample k: its time, then eta at each gauge.
+  std::size_t sample_count() const { return values_.size() / width(); }
+  const double* sample_values(std::size_t k) const { return values_.data() + k * width(); }
 
  private:
   double coverage(const double* px, const double* py, double x, double y) const;
@@ -42,7 +44,11 @@ class WaveGauges {
   Kernel w_;
   double scale_;
   CellGrid grid_;
-  std::vector<std::vector<double>> rows_;  // time, eta_1 ... eta_n
+  std::size_t width() const { return x_.size() + 1; }
+
+  /// time, eta_1 ... eta_n per sample, one row after another; reserved for the whole run, so
+  /// sampling in the time loop allocates nothing.
+  std::vector<double> values_;
 };
 
 }  // namespace wcmps

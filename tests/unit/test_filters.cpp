@@ -633,8 +633,8 @@ TEST(WaveGauges, TheSolversGaugesEqualTheFiltersOnTheSameParticles) {
   gauges.sample(sim);
   EXPECT_FALSE(gauges.due(0.0019));
   EXPECT_TRUE(gauges.due(0.002));
-  ASSERT_EQ(gauges.rows().size(), 1u);
-  const std::vector<double>& row = gauges.rows()[0];
+  ASSERT_EQ(gauges.sample_count(), 1u);
+  const std::vector<double> row(gauges.sample_values(0), gauges.sample_values(0) + 5);
   ASSERT_EQ(row.size(), 5u);
 
   // The same fluid particles as a frame, through vtkMPSFreeSurface with the same gauges.
