@@ -78,7 +78,13 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   if (ps.fluid_count() == 0) max_speed_ = 0.0;
   if (scene_.body && spec.body) body_.emplace(*spec.body, *scene_.body, gravity_, ps.now);
   compute_initial_pressure();
-  if (body_) body_history_ = {body_->sample(0.0)};
+  if (body_) {
+    // A sample per step: reserve for twice the steps the run takes at the largest time step
+    // (the step at rest), so that the time loop does not grow the vector in the usual case.
+    body_history_.reserve(2 * static_cast<std::size_t>(std::ceil(spec.end_time / rule_.step(0.0))) +
+                          1);
+    body_history_ = {body_->sample(0.0)};
+  }
 }
 
 void Simulation::compute_initial_pressure() {
