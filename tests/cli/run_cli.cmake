@@ -1,12 +1,14 @@
 # Runs one wcmps command and checks what it did:
 #   cmake -DCOMMAND="wcmps^^run^^..." [-DEXPECT_CODE=3] [-DEXPECT_STDERR=regex]
-#         [-DEXPECT_STDOUT=regex] [-DABSENT=path] [-DPRESENT=path^^path] [-DCOUNT_FRAMES=n]
+#         [-DEXPECT_STDOUT=regex] [-DABSENT=path^^path] [-DPRESENT=path^^path] [-DCOUNT_FRAMES=n]
 #         [-DSERIES=path/series.pvd] [-DCLEAN=dir] -P run_cli.cmake
 # Lists are separated by ^^ (add_test would split them at semicolons).
 string(REPLACE "^^" ";" COMMAND "${COMMAND}")
-if(DEFINED PRESENT)
-  string(REPLACE "^^" ";" PRESENT "${PRESENT}")
-endif()
+foreach(list PRESENT ABSENT)
+  if(DEFINED ${list})
+    string(REPLACE "^^" ";" ${list} "${${list}}")
+  endif()
+endforeach()
 if(DEFINED CLEAN)
   file(REMOVE_RECURSE "${CLEAN}")
 endif()

@@ -191,12 +191,14 @@ TEST(RunDirectory, NewEarlierAndForeignDirectories) {
   EXPECT_TRUE(fs::is_directory(dir));
   write_file_atomically(dir / "series.pvd", "x");
   write_file_atomically(dir / "frame_000000.vtp", "x");
+  write_file_atomically(dir / "gauges.csv", "x");
   fs::create_directories(dir / "post");  // what `wcmps post` made of it
   write_file_atomically(dir / "post" / "sections.csv", "x");
   EXPECT_THROW(prepare_run_directory(dir, false), IoError);  // an earlier run
   prepare_run_directory(dir, true);                          // replaced, with its products
   EXPECT_FALSE(fs::exists(dir / "series.pvd"));
   EXPECT_FALSE(fs::exists(dir / "frame_000000.vtp"));
+  EXPECT_FALSE(fs::exists(dir / "gauges.csv"));
   EXPECT_FALSE(fs::exists(dir / "post"));
   write_file_atomically(dir / "notes.txt", "mine");
   try {
