@@ -66,6 +66,26 @@ int vtkMPSSections::RequestData(vtkInformation*, vtkInformationVector** inputVec
     const double* l = &this->Lines[4 * k];
     lines.push_back({this->Names[k], {l[0], l[1]}, {l[2], l[3]}});
   }
+  if (lines.empty()) {
+    // None added: the case's sections, which `wcmps run` writes into every frame.
+    auto* names =
+        vtkStringArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("SectionNames"));
+    vtkDataArray* given = input->GetFieldData()->GetArray("SectionLines");
+    if (!names || !given || given->GetNumberOfComponents() != 4 ||
+        given->GetNumberOfTuples() != names->GetNumberOfValues()) {
+      vtkErrorMacro(
+          "No sections: add some (AddSection), or use a frame that lists its case's "
+          "sections (field data SectionNames and SectionLines).");
+      return 0;
+    }
+    for (vtkIdType k = 0; k < names->GetNumberOfValues(); ++k) {
+      double l[4];
+      given->GetTuple(k, l);
+      const double len = std::hypot(l[2], l[3]);
+      if (!(len > 0.0)) continue;
+      lines.push_back({names->GetValue(k), {l[0], l[1]}, {l[2] / len, l[3] / len}});
+    }
+  }
   vtkSmartPointer<vtkPolyData> fluid =
       wcmps_filters::ExtractFluid(input, wcmps_filters::FloatingPointArrays(input));
   const wcmps_filters::ParticleProbe probe(fluid, dl, re, this->Correction);
@@ -74,7 +94,7 @@ int vtkMPSSections::RequestData(vtkInformation*, vtkInformationVector** inputVec
   profiles->GetFieldData()->ShallowCopy(input->GetFieldData());
   vtkNew<vtkStringArray> names;
   names->SetName("SectionNames");
-  for (const auto& n : this->Names) names->InsertNextValue(n);
+  for (const auto& l : lines) names->InsertNextValue(l.name);
   profiles->GetFieldData()->AddArray(names);
   return 1;
 }

@@ -44,7 +44,8 @@ class WCMPSFILTERS_EXPORT vtkMPSSections : public vtkPolyDataAlgorithm {
   ///@{
   /**
    * The sections: name, a point (x, y) and a direction (nx, ny) from bed to surface.
-   * None by default.
+   * None added (the default): the frame's own, field data "SectionNames" and "SectionLines"
+   * (x, y, nx, ny), which `wcmps run` writes from the case's [[section]]s.
    */
   void AddSection(const char* name, double x, double y, double nx, double ny);
   void RemoveAllSections();

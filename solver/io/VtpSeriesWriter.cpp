@@ -61,6 +61,7 @@ void add_field_value(vtkFieldData* fd, const char* name, double value) {
 VtpSeriesWriter::VtpSeriesWriter(fs::path dir, const CaseSpec& spec)
     : dir_(std::move(dir)),
       case_name_(spec.name),
+      sections_(spec.sections),
       fields_(spec.output_fields),
       kinds_(spec.output_kinds),
       double_precision_(spec.output_double_precision) {}
@@ -162,6 +163,20 @@ void VtpSeriesWriter::write_frame(const Simulation& sim) {
   name->SetName("CaseName");
   name->InsertNextValue(case_name_);
   fd->AddArray(name);
+  if (!sections_.empty()) {
+    // The case's measuring sections (fixed in space): vtkMPSSections' default lines.
+    vtkNew<vtkStringArray> names;
+    names->SetName("SectionNames");
+    vtkNew<vtkDoubleArray> lines;
+    lines->SetName("SectionLines");
+    lines->SetNumberOfComponents(4);
+    for (const SectionSpec& sec : sections_) {
+      names->InsertNextValue(sec.name);
+      lines->InsertNextTuple4(sec.origin.x, sec.origin.y, sec.direction.x, sec.direction.y);
+    }
+    fd->AddArray(names);
+    fd->AddArray(lines);
+  }
 
   char file[64];
   std::snprintf(file, sizeof file, "%s%06zu.vtp", RunFiles::kFramePrefix, entries_.size());

@@ -6,8 +6,10 @@
 ///
 /// Each frame carries the fields the case asks for (particles/Fields.h) for the particle kinds
 /// it asks for, one vertex cell per particle, and field data that lets filters and scripts work
-/// without the case file: TimeValue, Step, DL, re, n0, lambda, c0, rho0, CaseName, and with a
-/// block its outline (BlockOutline: corners as x y 0 tuples), BlockS and BlockU.
+/// without the case file: TimeValue, Step, DL, re, n0, lambda, c0, rho0, CaseName, with a
+/// block its outline (BlockOutline: corners as x y 0 tuples), BlockS and BlockU, and with
+/// measuring sections their names (SectionNames) and lines (SectionLines: x y nx ny tuples,
+/// the origin and the unit direction from the bed towards the surface).
 
 #include <cstdint>
 #include <filesystem>
@@ -39,6 +41,7 @@ class VtpSeriesWriter : public FrameSink {
 
   std::filesystem::path dir_;
   std::string case_name_;
+  std::vector<SectionSpec> sections_;
   std::vector<FieldId> fields_;
   std::vector<ParticleKind> kinds_;
   bool double_precision_;

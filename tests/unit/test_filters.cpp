@@ -467,6 +467,47 @@ TEST(Sections, ProfilesInTheBedFrameFromBedToSurface) {
   }
 }
 
+// With no sections added, the filter takes the frame's own (the case's [[section]]s, which
+// `wcmps run` writes as SectionNames and SectionLines) and gives what adding them gives.
+TEST(Sections, TheFramesOwnSectionsByDefault) {
+  auto frame = lattice_frame(kBoxX, kBoxY, linear_u, linear_p);
+  vtkNew<vtkStringArray> names;
+  names->SetName("SectionNames");
+  names->InsertNextValue("V");
+  names->InsertNextValue("T");
+  vtkNew<vtkDoubleArray> lines;
+  lines->SetName("SectionLines");
+  lines->SetNumberOfComponents(4);
+  lines->InsertNextTuple4(20 * kDl, 0.0, 0.0, 1.0);
+  lines->InsertNextTuple4(10 * kDl, 0.0, 0.6, 0.8);
+  frame->GetFieldData()->AddArray(names);
+  frame->GetFieldData()->AddArray(lines);
+
+  vtkNew<vtkMPSSections> given;
+  given->AddSection("V", 20 * kDl, 0.0, 0.0, 1.0);
+  given->AddSection("T", 10 * kDl, 0.0, 0.6, 0.8);
+  given->SetInputData(frame);
+  given->Update();
+  vtkNew<vtkMPSSections> own;
+  own->SetInputData(frame);
+  own->Update();
+  ASSERT_EQ(own->GetSummary()->GetNumberOfRows(), 2);
+  EXPECT_EQ(own->GetSummary()->GetValueByName(1, "section").ToString(), "T");
+  ASSERT_EQ(own->GetOutput()->GetNumberOfPoints(), given->GetOutput()->GetNumberOfPoints());
+  auto* a = own->GetOutput()->GetPointData()->GetArray("u_along");
+  auto* b = given->GetOutput()->GetPointData()->GetArray("u_along");
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
+    EXPECT_EQ(a->GetComponent(i, 0), b->GetComponent(i, 0));
+  }
+
+  // A frame with neither: an error, no output.
+  auto bare = lattice_frame(kBoxX, kBoxY, linear_u, linear_p);
+  vtkNew<vtkMPSSections> none;
+  none->SetInputData(bare);
+  none->Update();
+  EXPECT_EQ(none->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 void add_block_outline(vtkPolyData* frame, const double c[2], const double a[2],
                        const double g[2]) {
   vtkNew<vtkDoubleArray> outline;
