@@ -14,7 +14,6 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkXMLImageDataWriter.h>
-#include <vtkXMLPolyDataReader.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,7 +24,6 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -33,51 +31,15 @@
 #include "core/Error.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
+#include "io/FrameReader.h"
 #include "io/RunDirectory.h"
+#include "io/SeriesIndex.h"
 #include "scene/CaseParser.h"
 
 namespace fs = std::filesystem;
 
 namespace wcmps {
 namespace {
-
-struct SeriesEntry {
-  double time;
-  std::string file;
-};
-
-/// The frames a series.pvd lists (as VtpSeriesWriter writes it).
-std::vector<SeriesEntry> read_series(const fs::path& pvd) {
-  std::ifstream in(pvd);
-  if (!in) throw IoError(pvd.string() + ": cannot read");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  static const std::regex dataset(R"(<DataSet\s[^>]*>)");
-  static const std::regex timestep(R"re(timestep="([^"]*)")re");
-  static const std::regex file(R"re(file="([^"]*)")re");
-  std::vector<SeriesEntry> out;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), dataset); it != std::sregex_iterator();
-       ++it) {
-    const std::string tag = it->str();
-    std::smatch t, f;
-    if (!std::regex_search(tag, t, timestep) || !std::regex_search(tag, f, file)) {
-      throw IoError(pvd.string() + ": a DataSet without timestep or file: " + tag);
-    }
-    out.push_back({std::stod(t[1].str()), f[1].str()});
-  }
-  return out;
-}
-
-/// The frame written for time t: the nearest, if within 1e-4 s (a fixed step writes a frame
-/// up to half a step after its time; the study's step is 2.5e-5 s).
-const SeriesEntry* frame_at(const std::vector<SeriesEntry>& series, double t) {
-  const SeriesEntry* best = nullptr;
-  for (const auto& e : series) {
-    if (!best || std::abs(e.time - t) < std::abs(best->time - t)) best = &e;
-  }
-  return best && std::abs(best->time - t) <= 1e-4 ? best : nullptr;
-}
 
 std::string num(double v) {
   char buf[32];
@@ -229,13 +191,7 @@ int post_command(const PostOptions& o) {
       const SeriesEntry& e = *frames[k];
       const fs::path frame_file = run / e.file;
       clock.start();
-      vtkNew<vtkXMLPolyDataReader> reader;
-      reader->SetFileName(frame_file.string().c_str());
-      reader->Update();
-      vtkPolyData* frame = reader->GetOutput();
-      if (reader->GetErrorCode() != 0 || frame->GetNumberOfPoints() == 0) {
-        throw IoError(frame_file.string() + ": cannot read the frame");
-      }
+      const vtkSmartPointer<vtkPolyData> frame = read_frame_file(frame_file);
       clock.stop("read");
       const std::string t = num(e.time);
 
