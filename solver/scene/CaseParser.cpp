@@ -721,6 +721,19 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.gauges.interval = r.number("interval", std::nullopt, 0.0, c.end_time, true);
     r.finish();
   }
+  if (const toml::node* n = root.get("figures")) {
+    if (!n->is_table()) root.fail(*n, "figures", "expected a table [figures]");
+    TableReader r(*n->as_table(), "[figures]", path);
+    const auto resolve = [&](const std::string& key) -> std::string {
+      const std::string given = r.string(key, "");
+      if (given.empty()) return given;
+      const std::filesystem::path p(given);
+      return p.is_absolute() ? given : (std::filesystem::path(path).parent_path() / p).string();
+    };
+    c.figures.measured_surface = resolve("measured_surface");
+    c.figures.measured_profiles = resolve("measured_profiles");
+    r.finish();
+  }
   if (const toml::node* n = root.get("post")) {
     if (!n->is_table()) root.fail(*n, "post", "expected a table [post]");
     TableReader r(*n->as_table(), "[post]", path);

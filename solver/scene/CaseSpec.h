@@ -135,6 +135,13 @@ struct GaugeSpec {
   double interval = 0.0;  ///< s between samples
 };
 
+/// Measured data for `wcmps figures` to overlay ([figures]); paths as given in the case file,
+/// resolved against its directory (empty: none). Columns in docs/figures.md.
+struct FiguresSpec {
+  std::string measured_surface;   ///< time [s], x [m], eta [m]
+  std::string measured_profiles;  ///< time [s], section, Y [-], u_along [m/s], u_normal [m/s]
+};
+
 enum class NegativePressure { Zero, Keep };
 
 struct CaseSpec {
@@ -203,6 +210,7 @@ struct CaseSpec {
   std::vector<SectionSpec> sections;
   PostSpec post;
   GaugeSpec gauges;
+  FiguresSpec figures;
   std::vector<FluidRegionSpec> fluids;
   std::vector<WallSpec> walls;
 
