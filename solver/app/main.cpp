@@ -1,14 +1,17 @@
 /// @file main.cpp
 /// @brief The wcmps command-line program: `wcmps run`, `wcmps check`, `wcmps post`,
+/// `wcmps figures`,
 /// `wcmps --version`.
 
 #include <vtkObject.h>
 
 #include <CLI/CLI.hpp>
 #include <clocale>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 
+#include "StudyFigures.h"
 #include "app/Commands.h"
 #include "app/ExitCodes.h"
 #include "app/Post.h"
@@ -72,6 +75,26 @@ int main(int argc, char** argv) {
       post_cmd->add_option("--threads", post_threads, "number of threads (default: all cores)")
           ->check(CLI::Range(1, 1024));
 
+  wcmps::FiguresOptions figs;
+  std::vector<double> fig_times;
+  std::string fig_size = "1200x800";
+  auto* fig_cmd = app.add_subcommand("figures",
+                                     "Render the study's figures of one or more runs off-screen "
+                                     "to PNG, with figures.json listing them");
+  fig_cmd->add_option("runs", figs.runs, "run directories (written by `wcmps run`)")->required();
+  fig_cmd->add_option("-o,--output", figs.output_dir,
+                      "output directory (default: FIRST_RUN/figures)");
+  fig_cmd->add_option("--case", figs.case_file,
+                      "take [figures] (measured data to overlay) from this case file instead of "
+                      "each run's copy (RUN/case.toml)");
+  auto* fig_times_opt = fig_cmd
+                            ->add_option("--times", fig_times,
+                                         "times (s), comma-separated (default: each case's "
+                                         "[output] times)")
+                            ->delimiter(',');
+  fig_cmd->add_option("--size", fig_size, "size of every figure in pixels, WIDTHxHEIGHT")
+      ->default_str("1200x800");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -90,6 +113,15 @@ int main(int argc, char** argv) {
       if (*times_opt) post.times = post_times;
       if (*post_thr_opt) post.threads = post_threads;
       return wcmps::post_command(post);
+    }
+    if (*fig_cmd) {
+      if (*fig_times_opt) figs.times = fig_times;
+      if (std::sscanf(fig_size.c_str(), "%dx%d", &figs.width, &figs.height) != 2) {
+        std::cerr << "wcmps: error: --size " << fig_size
+                  << ": expected WIDTHxHEIGHT, e.g. 1200x800\n";
+        return wcmps::exit_code::kUsage;
+      }
+      return wcmps::figures_command(figs);
     }
     return wcmps::check_command(check_file);
   } catch (const std::exception& e) {
