@@ -346,6 +346,22 @@ TEST(CaseParser, Gauges) {
                "[gauges] x: expected a number");
 }
 
+// [figures]: measured data files, relative paths against the case file's directory.
+TEST(CaseParser, FiguresMeasuredData) {
+  const std::string base = test::minimal_case_text();
+  const auto n = static_cast<std::uint32_t>(std::count(base.begin(), base.end(), '\n'));
+  const CaseSpec c = parse_case_text(
+      base + "\n[figures]\nmeasured_surface = \"m/s.csv\"\nmeasured_profiles = \"/abs/p.csv\"\n",
+      "dir/f.toml");
+  EXPECT_EQ(c.figures.measured_surface, "dir/m/s.csv");
+  EXPECT_EQ(c.figures.measured_profiles, "/abs/p.csv");
+  EXPECT_TRUE(parse_case_text(base, "f.toml").figures.measured_surface.empty());
+  expect_error(base + "\n[figures]\nmeasured = \"x.csv\"\n", n + 3,
+               "unknown key 'measured' in [figures]");
+  expect_error(base + "\n[figures]\nmeasured_surface = 3\n", n + 3,
+               "[figures] measured_surface: expected a string");
+}
+
 TEST(CaseParser, PostProducts) {
   const std::string block =
       study_block_case(40.0, 0.1005, 2928.0) + "\n[[section]]\nname = \"C\"\nat = \"C\"\n";
