@@ -1,7 +1,7 @@
 #include "StudyFigures.h"
 
-#include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
+#include <vtkDiscretizableColorTransferFunction.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkMPSFreeSurface.h>
@@ -460,9 +460,9 @@ Figure averages_figure(const RunData& r, int w, int h) {
   return fig;
 }
 
-vtkSmartPointer<vtkColorTransferFunction> speed_colours(double top) {
+vtkSmartPointer<vtkDiscretizableColorTransferFunction> speed_colours(double top) {
   // Viridis at five stops; NaN (no water) white.
-  auto lut = vtkSmartPointer<vtkColorTransferFunction>::New();
+  auto lut = vtkSmartPointer<vtkDiscretizableColorTransferFunction>::New();
   const double stops[5][3] = {{0.267, 0.005, 0.329},
                               {0.230, 0.322, 0.546},
                               {0.128, 0.567, 0.551},
@@ -471,17 +471,25 @@ vtkSmartPointer<vtkColorTransferFunction> speed_colours(double top) {
   for (int k = 0; k < 5; ++k)
     lut->AddRGBPoint(top * k / 4.0, stops[k][0], stops[k][1], stops[k][2]);
   lut->SetNanColor(1.0, 1.0, 1.0);
+  // Filled contours, as the study draws U: 14 bands of equal width.
+  lut->DiscretizeOn();
+  lut->SetNumberOfValues(14);
+  lut->Build();
   return lut;
 }
 
-vtkSmartPointer<vtkColorTransferFunction> vorticity_colours(double top) {
-  // Moreland's cool-warm diverging map, white at zero; NaN (no water) light grey.
-  auto lut = vtkSmartPointer<vtkColorTransferFunction>::New();
+vtkSmartPointer<vtkDiscretizableColorTransferFunction> vorticity_colours(double top) {
+  // Moreland's cool-warm diverging map, light grey at zero; NaN (no water) light grey.
+  auto lut = vtkSmartPointer<vtkDiscretizableColorTransferFunction>::New();
   lut->SetColorSpaceToDiverging();
   lut->AddRGBPoint(-top, 0.230, 0.299, 0.754);
   lut->AddRGBPoint(0.0, 0.865, 0.865, 0.865);
   lut->AddRGBPoint(top, 0.706, 0.016, 0.150);
   lut->SetNanColor(1.0, 1.0, 1.0);
+  // Filled contours in 16 bands, an even number so that zero is a band edge.
+  lut->DiscretizeOn();
+  lut->SetNumberOfValues(16);
+  lut->Build();
   return lut;
 }
 
