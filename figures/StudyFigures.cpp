@@ -89,7 +89,6 @@ struct RunData {
   std::string tag;                 ///< in file names: the case name, with DL if not unique
   std::vector<std::array<double, 3>> measured_surface;  ///< time, x, eta
   std::vector<MeasuredSample> measured_profiles;
-  std::string label() const { return spec.name + " (DL " + fmt("%g", spec.dl * 1000) + " mm)"; }
 };
 
 /// A CSV file of measured data: a header row naming the columns, then numbers (the section
