@@ -218,9 +218,8 @@ double nice_ceiling(double x) {
   return std::ceil(x / p - 1e-9) * p;
 }
 
-FrameData read_frame(const fs::path& file, double time, const CaseSpec& spec,
-                     const std::array<double, 4>* window) {
-  const vtkSmartPointer<vtkPolyData> frame = read_frame_file(file);
+/// The frame's time and block (its BlockOutline, corners C, A, G).
+FrameData block_of(vtkPolyData* frame, const fs::path& file, double time) {
   FrameData d;
   d.time = time;
   vtkDataArray* outline = frame->GetFieldData()->GetArray("BlockOutline");
@@ -231,8 +230,12 @@ FrameData read_frame(const fs::path& file, double time, const CaseSpec& spec,
     d.block_x.push_back(outline->GetComponent(k, 0));
     d.block_y.push_back(outline->GetComponent(k, 1));
   }
-  if (!window) return d;  // the first pass only finds the block
+  return d;
+}
 
+/// Everything else the figures take from the frame, the grid over `window`.
+void add_products(FrameData& d, vtkPolyData* frame, const CaseSpec& spec,
+                  const std::array<double, 4>& window) {
   vtkNew<vtkMPSFreeSurface> surface;
   surface->SetInputData(frame);
   surface->Update();
@@ -284,12 +287,11 @@ FrameData read_frame(const fs::path& file, double time, const CaseSpec& spec,
   grid->SetInputConnection(sv->GetOutputPort());
   const double h = spec.post.grid_spacing > 0.0 ? spec.post.grid_spacing : spec.dl;
   grid->SetSpacing(h);
-  const double* w = window->data();
+  const double* w = window.data();
   grid->SetSamplingBounds(w[0], w[1], w[2], w[3], 0.0, 0.0);
   for (const char* name : {"speed", "vorticity", "velocity"}) grid->AddArrayName(name);
   grid->Update();
   d.grid = grid->GetOutput();
-  return d;
 }
 
 /// A single-component image of one array of the grid, for vtkPlotHistogram2D.
@@ -695,17 +697,11 @@ int figures_command(const FiguresOptions& o) {
   std::vector<std::vector<SeriesEntry>> series;
   for (const auto& dir : o.runs) {
     const fs::path run(dir);
-    std::error_code ec;
-    if (!fs::is_directory(run, ec)) {
-      std::cerr << "wcmps: error: " << dir << ": no such run directory\n";
+    if (const std::string problem = run_directory_problem(run); !problem.empty()) {
+      std::cerr << "wcmps: error: " << problem << '\n';
       return exit_code::kUsage;
     }
     const fs::path pvd = run / RunFiles::kSeries, case_copy = run / RunFiles::kCase;
-    if (!fs::exists(pvd, ec) || !fs::exists(case_copy, ec)) {
-      std::cerr << "wcmps: error: " << dir << " holds no run (" << RunFiles::kSeries << " and "
-                << RunFiles::kCase << " are written by `wcmps run`)\n";
-      return exit_code::kUsage;
-    }
     RunData r;
     r.dir = run;
     try {
@@ -770,10 +766,13 @@ int figures_command(const FiguresOptions& o) {
     if (ec || !fs::is_directory(out)) throw IoError(out.string() + ": cannot create the directory");
     for (size_t k = 0; k < runs.size(); ++k) {
       RunData& r = runs[k];
-      // Two passes: the block's positions fix one map window for every time, then the data.
+      // Each frame read once; the block's positions at every time fix one map window, then
+      // the products are computed over it.
+      std::vector<vtkSmartPointer<vtkPolyData>> frames;
       std::vector<FrameData> blocks;
       for (const SeriesEntry* e : picked[k]) {
-        blocks.push_back(read_frame(r.dir / e->file, e->time, r.spec, nullptr));
+        frames.push_back(read_frame_file(r.dir / e->file));
+        blocks.push_back(block_of(frames.back(), r.dir / e->file, e->time));
       }
       // Widened to the map panels' shape, so that the grid fills them at equal scales.
       const std::array<double, 4> w = map_window(blocks);
@@ -782,9 +781,9 @@ int figures_command(const FiguresOptions& o) {
           x, y,
           figures::plot_area_size(o.width, o.height, 2, static_cast<int>(blocks.size()), true));
       r.window = {x[0], x[1], y[0], y[1]};
-      for (const SeriesEntry* e : picked[k]) {
-        r.frames.push_back(read_frame(r.dir / e->file, e->time, r.spec, &r.window));
-      }
+      for (size_t i = 0; i < frames.size(); ++i)
+        add_products(blocks[i], frames[i], r.spec, r.window);
+      r.frames = std::move(blocks);
     }
     auto emit = [&](Figure fig, const std::string& name, const std::string& kind, const RunData& r,
                     const std::string& shows) {

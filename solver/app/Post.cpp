@@ -109,13 +109,8 @@ int post_command(const PostOptions& o) {
   const fs::path run(o.run_dir);
   const fs::path pvd = run / RunFiles::kSeries, case_copy = run / RunFiles::kCase;
   std::error_code ec;
-  if (!fs::is_directory(run, ec)) {
-    std::cerr << "wcmps: error: " << run.string() << ": no such run directory\n";
-    return exit_code::kUsage;
-  }
-  if (!fs::exists(pvd, ec) || !fs::exists(case_copy, ec)) {
-    std::cerr << "wcmps: error: " << run.string() << " holds no run (" << RunFiles::kSeries
-              << " and " << RunFiles::kCase << " are written by `wcmps run`)\n";
+  if (const std::string problem = run_directory_problem(run); !problem.empty()) {
+    std::cerr << "wcmps: error: " << problem << '\n';
     return exit_code::kUsage;
   }
   CaseSpec spec;

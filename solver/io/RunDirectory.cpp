@@ -10,6 +10,16 @@ namespace fs = std::filesystem;
 
 namespace wcmps {
 
+std::string run_directory_problem(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return dir.string() + ": no such run directory";
+  if (!fs::exists(dir / RunFiles::kSeries, ec) || !fs::exists(dir / RunFiles::kCase, ec)) {
+    return dir.string() + " holds no run (" + RunFiles::kSeries + " and " + RunFiles::kCase +
+           " are written by `wcmps run`)";
+  }
+  return {};
+}
+
 bool is_run_file(const fs::path& name) {
   const std::string s = name.filename().string();
   auto starts = [&](const std::string& p) { return s.rfind(p, 0) == 0; };

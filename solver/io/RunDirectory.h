@@ -3,6 +3,7 @@
 /// @brief What a run directory holds, and how a new run takes one over.
 
 #include <filesystem>
+#include <string>
 
 namespace wcmps {
 
@@ -28,5 +29,9 @@ void prepare_run_directory(const std::filesystem::path& dir, bool overwrite);
 /// True for the names a run writes (series, summary, log, case copy, frames, temporaries) and
 /// for the post directory made from it.
 bool is_run_file(const std::filesystem::path& name);
+
+/// For the commands that read a finished run (post, figures): empty if `dir` holds one (its
+/// series and case copy), else what is wrong, as the end of an error message naming `dir`.
+std::string run_directory_problem(const std::filesystem::path& dir);
 
 }  // namespace wcmps
