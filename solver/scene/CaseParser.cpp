@@ -54,6 +54,13 @@ class TableReader {
     throw CaseError(where(n), label_ + " " + key + ": " + msg);
   }
 
+  /// Fails naming `key` at its place in the file, or at the table's if the key is not given
+  /// (its default is what is wrong).
+  [[noreturn]] void fail_key(const std::string& key, const std::string& msg) const {
+    if (const toml::node* n = t_.get(key)) fail(*n, key, msg);
+    throw CaseError(where(), label_ + " " + key + ": " + msg);
+  }
+
   const toml::node* get(const std::string& key) {
     known_.push_back(key);
     return t_.get(key);
@@ -129,7 +136,7 @@ class TableReader {
     }
     std::string list;
     for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
-    fail(*t_.get(key), key, "\"" + v + "\" is not one of " + list);
+    fail_key(key, "\"" + v + "\" is not one of " + list);
   }
 
   Vec2 point_value(const toml::node& n, const std::string& key) const {
@@ -294,9 +301,9 @@ void read_tank(TableReader& r, CaseSpec& c) {
   const double tan_a = std::tan(t.slope_deg * std::acos(-1.0) / 180.0);
   const double toe = t.depth / tan_a;  // where the bed meets the bottom
   if (!(t.length > toe)) {
-    r.fail(*r.table().get("length"), "length",
-           "the bed reaches the bottom " + fmt(toe) + " m from the shoreline, at or beyond the " +
-               "far wall: make the tank longer or the slope steeper");
+    r.fail_key("length", "the bed reaches the bottom " + fmt(toe) +
+                             " m from the shoreline, at or beyond the " +
+                             "far wall: make the tank longer or the slope steeper");
   }
   r.finish();
   WallSpec wall;
@@ -336,14 +343,14 @@ BodyMotionSpec read_motion(TableReader& r) {
     for (const auto& e : *s)
       m.distances.push_back(r.number_value(e, "distances", -kInf, kInf, false, false));
     if (m.times.size() != m.distances.size() || m.times.size() < 2) {
-      r.fail(*r.table().get("distances"), "distances",
-             "needs one distance per time, at least two (" + std::to_string(m.times.size()) +
-                 " times, " + std::to_string(m.distances.size()) + " distances)");
+      r.fail_key("distances", "needs one distance per time, at least two (" +
+                                  std::to_string(m.times.size()) + " times, " +
+                                  std::to_string(m.distances.size()) + " distances)");
     }
     try {
       SplineSlide check(m.times, m.distances);
     } catch (const std::invalid_argument& e) {
-      r.fail(*r.table().get("distances"), "distances", e.what());
+      r.fail_key("distances", e.what());
     }
   } else if (type == "ln-cosh") {
     m.type = BodyMotionType::LnCosh;
@@ -373,8 +380,8 @@ void read_block(TableReader& r, CaseSpec& c) {
   const double alpha = t.slope_deg * deg, angle_a = b.angle_a_deg * deg;
   const double angle_g = std::acos(-1.0) - alpha - angle_a;
   if (!(angle_g > 0.0)) {
-    r.fail(*r.table().get("angle_a"), "angle_a",
-           "with the bed's " + fmt(t.slope_deg) + " degrees at C, the angles leave none for G");
+    r.fail_key("angle_a",
+               "with the bed's " + fmt(t.slope_deg) + " degrees at C, the angles leave none for G");
   }
   // C on the bed at the top's depth; A along the horizontal top; G down the bed from C, at
   // CG = CA sin(A) / sin(G) (law of sines).
@@ -383,11 +390,11 @@ void read_block(TableReader& r, CaseSpec& c) {
   const double cg = b.top_length * std::sin(angle_a) / std::sin(angle_g);
   b.g = b.c + Vec2{std::cos(alpha), -std::sin(alpha)} * cg;
   if (b.g.y <= -t.depth) {
-    r.fail(*r.table().get("top_length"), "top_length",
-           "the block's corner G (" + fmt(b.g.x) + ", " + fmt(b.g.y) +
-               ") m lies below the toe of the bed: the block does not fit on the slope");
+    r.fail_key("top_length",
+               "the block's corner G (" + fmt(b.g.x) + ", " + fmt(b.g.y) +
+                   ") m lies below the toe of the bed: the block does not fit on the slope");
   }
-  if (b.a.x >= t.length) r.fail(*r.table().get("top_length"), "top_length", "reaches the far wall");
+  if (b.a.x >= t.length) r.fail_key("top_length", "reaches the far wall");
   BodySpec body;
   body.density = b.density;
   body.downslope = {std::cos(alpha), -std::sin(alpha)};
@@ -532,13 +539,13 @@ SectionSpec read_section(TableReader& r, const CaseSpec& c) {
     sec.direction = {std::sin(alpha), std::cos(alpha)};
   }
   if (dir) {
-    if (!(norm(*dir) > 0.0)) r.fail(*r.table().get("direction"), "direction", "must not be zero");
+    if (!(norm(*dir) > 0.0)) r.fail_key("direction", "must not be zero");
     sec.direction = *dir * (1.0 / norm(*dir));
   }
   r.finish();
   for (const auto& other : c.sections) {
     if (other.name == sec.name) {
-      r.fail(*r.table().get("name"), "name", "\"" + sec.name + "\" is used by another section");
+      r.fail_key("name", "\"" + sec.name + "\" is used by another section");
     }
   }
   return sec;
@@ -615,7 +622,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.courant = r.number("courant", 0.4, 0.0, 1.0, true);
     c.viscous_number = r.number("viscous_number", 0.125, 0.0, 0.5, true);
     if (c.step_mode == TimeStepMode::Fixed && c.fixed_step > c.end_time) {
-      r.fail(*r.table().get("fixed_step"), "fixed_step", "is longer than the end time");
+      r.fail_key("fixed_step", "is longer than the end time");
     }
     r.finish();
   }
@@ -679,7 +686,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     }
     if (lo) {
       if (!(hi->x > lo->x && hi->y > lo->y)) {
-        r.fail(*r.table().get("domain_max"), "domain_max", "must exceed domain_min in x and y");
+        r.fail_key("domain_max", "must exceed domain_min in x and y");
       }
       c.domain = std::make_pair(*lo, *hi);
     }

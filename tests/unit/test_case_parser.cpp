@@ -124,6 +124,10 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
   expect_error(replace(test::minimal_case_text(), "end = 0.01",
                        "end = 0.01\nstep = \"fixed\"\nfixed_step = 0.5"),
                10, "fixed_step: is longer than the end time");
+  // A default that does not fit the rest is named at its table (found by the fuzzer: the
+  // message once dereferenced the absent key's node).
+  expect_error(replace(test::minimal_case_text(), "end = 0.01", "end = 0.00001\nstep = \"fixed\""),
+               7, "[time] fixed_step: is longer than the end time");
 }
 
 TEST(CaseParser, MissingRequiredKeysAndShapesAreNamed) {
@@ -278,6 +282,9 @@ TEST(SceneGeometry, TheStudysBlocksHaveTheirSidesAndVolumes) {
 TEST(SceneGeometry, BlockErrorsAreNamed) {
   const std::string one = study_block_case(40.0, 0.1005, 2928.0);
   expect_error(replace(one, "angle_a = 100.0", "angle_a = 150.0"), 17, "leave none for G");
+  // The default angle at A (100 degrees) with an 85-degree bed: named at [block].
+  expect_error(replace(replace(one, "angle_a = 100.0\n", ""), "slope = 40.000000", "slope = 85.0"),
+               15, "[block] angle_a: with the bed's 85 degrees at C, the angles leave none for G");
   expect_error(replace(one, "top_length = 0.100500", "top_length = 1.5"), 16,
                "does not fit on the slope");
   // Messages from the scene builder name the block as the case file does: at DL = 10 mm its
