@@ -20,6 +20,7 @@
 #include <vtkScalarsToColors.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -198,17 +199,19 @@ Layout render_png(Figure& fig, const std::filesystem::path& file) {
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
-  const std::filesystem::path tmp = temporary_path_for(file);
+  // Encoded in memory, written atomically by us (a full disk is then an IoError, not half a
+  // PNG).
   vtkNew<vtkPNGWriter> png;
   png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(tmp.c_str());
+  png->WriteToMemoryOn();
   png->Write();
-  if (png->GetErrorCode() != 0 || !std::filesystem::exists(tmp)) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    throw IoError(file.string() + ": cannot write the image");
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  if (png->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0) {
+    throw IoError(file.string() + ": cannot encode the image");
   }
-  replace_file(tmp, file);
+  write_file_atomically(file,
+                        std::string_view(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                                         static_cast<std::size_t>(bytes->GetNumberOfValues())));
   return layout;
 }
 

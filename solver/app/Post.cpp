@@ -211,13 +211,15 @@ int post_command(const PostOptions& o) {
         clock.stop("grid");
         char name[64];
         std::snprintf(name, sizeof name, "grid_%06zu.vti", k);
-        const fs::path file = out / name, tmp = temporary_path_for(out / name);
+        const fs::path file = out / name;
         vtkNew<vtkXMLImageDataWriter> w;
         w->SetInputConnection(grid->GetOutputPort());
-        w->SetFileName(tmp.string().c_str());
         w->SetDataModeToBinary();
-        if (w->Write() != 1) throw IoError(file.string() + ": cannot write");
-        replace_file(tmp, file);
+        // In memory, then atomically by us: VTK's XML writers crash when a write fails
+        // part-way (disk full).
+        w->WriteToOutputStringOn();
+        if (w->Write() != 1) throw IoError(file.string() + ": cannot encode the grid");
+        write_file_atomically(file, w->GetOutputString());
         grid_pvd +=
             "    <DataSet timestep=\"" + t + "\" group=\"\" part=\"0\" file=\"" + name + "\"/>\n";
       }

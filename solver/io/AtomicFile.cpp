@@ -25,7 +25,8 @@ void replace_file(const std::filesystem::path& tmp, const std::filesystem::path&
   }
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+void write_file_atomically(const std::filesystem::path& path, std::string_view content,
+                           Durability durability) {
   const auto tmp = temporary_path_for(path);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw IoError("cannot write " + path.string() + ": " + std::strerror(errno));
@@ -42,8 +43,10 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     }
     done += static_cast<std::size_t>(w);
   }
-  if (::close(fd) != 0) {
-    const int err = errno;
+  const bool synced = durability != Durability::Synced || ::fsync(fd) == 0;
+  const int sync_error = errno;
+  if (::close(fd) != 0 || !synced) {
+    const int err = synced ? errno : sync_error;
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
     throw IoError("cannot write " + path.string() + ": " + std::strerror(err));
