@@ -10,11 +10,13 @@
 
 #include "app/EmbeddedCase.h"
 #include "app/ExitCodes.h"
+#include "app/StopSignals.h"
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/BodyCsv.h"
+#include "io/Checkpoint.h"
 #include "io/RunDirectory.h"
 #include "io/RunSummary.h"
 #include "io/VtpSeriesWriter.h"
@@ -59,15 +61,19 @@ std::string progress_line(const Progress& p) {
 }
 
 /// Writes frames through the series writer and notes each in the log; samples the wave gauges
-/// (if any) after every step, and rewrites block.csv and gauges.csv with every frame.
+/// (if any) after every step, rewrites block.csv and gauges.csv with every frame, and writes
+/// the checkpoints.
 class LoggedSink : public FrameSink {
  public:
-  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log, const fs::path& dir, WaveGauges* gauges)
+  LoggedSink(VtpSeriesWriter& writer, std::ofstream& log, const fs::path& dir, WaveGauges* gauges,
+             CheckpointStore& checkpoints, const std::string& case_text)
       : writer_(writer),
         log_(log),
         body_csv_(dir / RunFiles::kBody),
         gauges_csv_(dir / RunFiles::kGauges),
-        gauges_(gauges) {}
+        gauges_(gauges),
+        checkpoints_(checkpoints),
+        case_text_(case_text) {}
   void after_step(const Simulation& sim) override {
     if (gauges_ && gauges_->due(sim.time())) gauges_->sample(sim);
   }
@@ -75,13 +81,43 @@ class LoggedSink : public FrameSink {
     const std::size_t before = writer_.entries().size();
     writer_.write_frame(sim);
     if (writer_.entries().size() == before) return;
-    if (sim.body()) write_body_csv(body_csv_, sim.body_history());
-    if (gauges_) write_file_atomically(gauges_csv_, gauges_->csv());
+    write_tables(sim);
     char buf[160];
     std::snprintf(buf, sizeof buf, "frame %-5zu t = %-10.6g step %-8lld dt %.4g s  %s", before,
                   sim.time(), static_cast<long long>(sim.steps()), sim.last_dt(),
                   writer_.entries().back().file.c_str());
     log_ << buf << std::endl;
+  }
+  /// block.csv and gauges.csv as of the simulation's state.
+  void write_tables(const Simulation& sim) {
+    if (sim.body()) write_body_csv(body_csv_, sim.body_history());
+    if (gauges_) write_file_atomically(gauges_csv_, gauges_->csv());
+  }
+  void checkpoint(const Simulation& sim, const RunStats& stats) override {
+    const fs::path file = checkpoints_.write(case_text_, [&](StateWriter& out) {
+      sim.save(out);
+      if (gauges_) gauges_->save(out);
+      writer_.save(out);
+      stats.save(out);
+    });
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "checkpoint t = %-10.6g step %-8lld%s %s", sim.time(),
+                  static_cast<long long>(sim.steps()), sim.settling() ? " (settling)" : "",
+                  file.filename().c_str());
+    log_ << buf << std::endl;
+  }
+  /// Takes the run back to a checkpoint: the simulation, the gauges, the series (frames
+  /// after it are removed) and the run's figures. Returns the checkpoint's file.
+  fs::path load(Simulation& sim, RunStats& before, std::vector<std::string>& rejected) {
+    return checkpoints_.load_newest(
+        case_text_,
+        [&](StateReader& in) {
+          sim.load(in);
+          if (gauges_) gauges_->load(in);
+          writer_.load(in);
+          before.load(in);
+        },
+        rejected);
   }
 
  private:
@@ -90,6 +126,8 @@ class LoggedSink : public FrameSink {
   fs::path body_csv_;
   fs::path gauges_csv_;
   WaveGauges* gauges_;
+  CheckpointStore& checkpoints_;
+  const std::string& case_text_;
 };
 
 void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
@@ -178,10 +216,25 @@ int check_command(const std::string& case_file) {
 }
 
 int run_command(const RunOptions& o) {
+  const bool restart = !o.restart_dir.empty();
   CaseSpec spec;
   std::optional<Scene> scene;
+  fs::path dir;
   try {
-    spec = load_case(o.case_file);
+    if (restart) {
+      dir = o.restart_dir;
+      std::error_code ec;
+      if (!fs::is_directory(dir, ec) || !fs::exists(dir / RunFiles::kCase, ec)) {
+        std::cerr << "wcmps: error: cannot restart: " << dir.string()
+                  << (fs::is_directory(dir, ec) ? " holds no run (no case.toml)"
+                                                : ": no such run directory")
+                  << '\n';
+        return exit_code::kCannotRestart;
+      }
+      spec = parse_case_file((dir / RunFiles::kCase).string());
+    } else {
+      spec = load_case(o.case_file);
+    }
     if (o.end_time) {
       if (!(*o.end_time > 0.0) || !std::isfinite(*o.end_time)) {
         std::cerr << "wcmps: error: --end-time must be a positive number of seconds\n";
@@ -203,25 +256,75 @@ int run_command(const RunOptions& o) {
   }
   if (o.threads) set_thread_count(*o.threads);
 
-  const fs::path dir = o.output_dir.empty() ? fs::path("runs") / spec.name : fs::path(o.output_dir);
+  if (!restart) {
+    dir = o.output_dir.empty() ? fs::path("runs") / spec.name : fs::path(o.output_dir);
+  }
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   std::ofstream log;
   std::optional<Simulation> sim;
   try {
-    prepare_run_directory(dir, o.overwrite);
-    write_file_atomically(dir / RunFiles::kCase, spec.source_text);
-    log.open(dir / RunFiles::kLog);
+    if (restart) {
+      remove_stale_temporaries(dir);  // of a run that was killed while writing
+    } else {
+      prepare_run_directory(dir, o.overwrite);
+      write_file_atomically(dir / RunFiles::kCase, spec.source_text);
+    }
+    log.open(dir / RunFiles::kLog, restart ? std::ios::app : std::ios::trunc);
     if (!log) throw IoError("cannot write " + (dir / RunFiles::kLog).string());
-    log << "wcmps " << kVersion << " run of " << spec.file.file << '\n';
-    print_scene(log, spec, *scene);
+    if (restart) {
+      log << "\nwcmps " << kVersion << " restart of " << dir.string() << '\n';
+    } else {
+      log << "wcmps " << kVersion << " run of " << spec.file.file << '\n';
+      print_scene(log, spec, *scene);
+    }
     log << "threads             " << thread_count() << '\n' << std::flush;
     const Vec2 lo = scene->domain_lo, hi = scene->domain_hi;
     sim.emplace(spec, std::move(*scene));
     VtpSeriesWriter writer(dir, spec);
+    if (!restart) writer.start();
     std::optional<WaveGauges> gauges;
     if (!spec.gauges.x.empty()) gauges.emplace(spec, lo, hi);
-    LoggedSink sink(writer, log, dir, gauges ? &*gauges : nullptr);
+    CheckpointStore checkpoints(dir, spec.checkpoint_keep);
+    LoggedSink sink(writer, log, dir, gauges ? &*gauges : nullptr, checkpoints, spec.source_text);
     Runner runner(*sim, output_times(spec, spec.end_time), spec.end_time);
+    runner.set_checkpoints({spec.checkpoint_interval, spec.checkpoint_wall_interval});
+    runner.set_stop_request(stop_signal);
+
+    std::string restarted_from;
+    if (restart) {
+      RunStats before;
+      std::vector<std::string> rejected;
+      fs::path from;
+      try {
+        from = sink.load(*sim, before, rejected);
+      } catch (const CheckpointError& e) {
+        std::cerr << "wcmps: error: cannot restart: " << e.what() << '\n';
+        log << "error: cannot restart: " << e.what() << '\n';
+        return exit_code::kCannotRestart;
+      }
+      for (const auto& r : rejected) {
+        std::cerr << "wcmps: warning: checkpoint skipped and removed: " << r << '\n';
+        log << "checkpoint skipped and removed: " << r << '\n';
+      }
+      const TimeStepRule& rule = sim->time_step_rule();
+      const double tolerance = rule.mode == TimeStepMode::Fixed ? 0.5 * rule.fixed : 0.0;
+      if (!sim->settling() && sim->time() >= spec.end_time - tolerance) {
+        std::cerr << "wcmps: error: the run in " << dir.string()
+                  << " has reached t = " << sim->time() << " s, its end time " << spec.end_time
+                  << " s: give a later --end-time to continue it\n";
+        return exit_code::kUsage;
+      }
+      sink.write_tables(*sim);
+      runner.resume(before);
+      restarted_from = from.filename().string();
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "continuing from %s at t = %g s%s, step %lld",
+                    restarted_from.c_str(), sim->time(), sim->settling() ? " of settling" : "",
+                    static_cast<long long>(sim->steps()));
+      log << buf << std::endl;
+      std::cerr << "wcmps: " << buf << '\n';
+    }
+
     std::size_t shown = 0;
     auto progress = [&](const Progress& p) {
       if (!tty) return;
@@ -232,6 +335,7 @@ int run_command(const RunOptions& o) {
     };
     std::optional<InstabilityReport> unstable;
     RunStats stats;
+    catch_stop_signals();
     try {
       stats = runner.run(sink, progress);
     } catch (const InstabilityError& e) {
@@ -239,7 +343,8 @@ int run_command(const RunOptions& o) {
       stats = runner.stats();
     }
     if (tty && shown > 0) std::fputc('\n', stderr);
-    const RunSummary summary = summarize(spec, *sim, stats, unstable);
+    RunSummary summary = summarize(spec, *sim, stats, unstable);
+    summary.restarted_from = restarted_from;
     write_file_atomically(dir / RunFiles::kSummary, summary.to_json().dump(2) + "\n");
     log << summary.to_text() << std::flush;
     if (unstable) {
@@ -248,6 +353,14 @@ int run_command(const RunOptions& o) {
                 << (dir / RunFiles::kSeries).string() << '\n';
       return exit_code::kUnstable;
     }
+    if (stats.stop_signal != 0) {
+      std::cerr << "wcmps: stopped by " << signal_name(stats.stop_signal)
+                << " at t = " << sim->time() << " s" << (sim->settling() ? " of settling" : "")
+                << ", step " << sim->steps()
+                << "; checkpoint written. Continue with: wcmps run --restart " << dir.string()
+                << '\n';
+      return exit_code::kStoppedBySignal + stats.stop_signal;
+    }
     std::cout << summary.to_text() << "series: " << (dir / RunFiles::kSeries).string() << '\n';
     return exit_code::kOk;
   } catch (const IoError& e) {
@@ -255,6 +368,9 @@ int run_command(const RunOptions& o) {
     std::cerr << "wcmps: error: " << e.what() << '\n';
     if (log) log << "error: " << e.what() << '\n';
     return exit_code::kIo;
+  } catch (const CheckpointError& e) {
+    std::cerr << "wcmps: error: " << e.what() << '\n';
+    return exit_code::kCannotRestart;
   }
 }
 

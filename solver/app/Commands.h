@@ -14,6 +14,9 @@ struct RunOptions {
   std::optional<double> settle_time;
   std::optional<int> threads;
   bool overwrite = false;
+  /// Continue the run in this directory from its newest checkpoint (case_file, output_dir,
+  /// settle_time and overwrite must then be unset).
+  std::string restart_dir;
 };
 
 int run_command(const RunOptions& options);

@@ -47,7 +47,17 @@ int main(int argc, char** argv) {
   auto* thr_opt =
       run_cmd->add_option("--threads", threads, "number of threads (default: all cores)")
           ->check(CLI::Range(1, 1024));
-  run_cmd->add_flag("--overwrite", run.overwrite, "replace an earlier run in the output directory");
+  auto* overwrite_opt = run_cmd->add_flag("--overwrite", run.overwrite,
+                                          "replace an earlier run in the output directory");
+  auto* restart_opt =
+      run_cmd
+          ->add_option("--restart", run.restart_dir,
+                       "continue the run in this directory from its newest checkpoint "
+                       "(with its own case.toml; --end-time may extend it)")
+          ->excludes(overwrite_opt)
+          ->excludes(settle_opt);
+  run_cmd->get_option("case")->excludes(restart_opt);
+  run_cmd->get_option("--output")->excludes(restart_opt);
 
   std::string check_file;
   auto* check_cmd = app.add_subcommand("check",

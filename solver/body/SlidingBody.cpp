@@ -1,6 +1,7 @@
 #include "body/SlidingBody.h"
 
 #include <cmath>
+#include <string>
 #include <tuple>
 
 namespace wcmps {
@@ -84,6 +85,69 @@ BodySample SlidingBody::sample(double time) const {
   b.force = force_;
   std::tie(b.normal, b.along) = support(state_, force_);
   return b;
+}
+
+void SlidingBody::save(StateWriter& out) const {
+  out.scalar("body_s", state_.s);
+  out.scalar("body_u", state_.u);
+  out.scalar("body_a", state_.a);
+  out.scalar("body_pressure_force_x", force_.pressure.x);
+  out.scalar("body_pressure_force_y", force_.pressure.y);
+  out.scalar("body_viscous_force_x", force_.viscous.x);
+  out.scalar("body_viscous_force_y", force_.viscous.y);
+  out.integer("body_held", held_ ? 1 : 0);
+}
+
+void SlidingBody::load(StateReader& in) {
+  state_ = {in.scalar("body_s"), in.scalar("body_u"), in.scalar("body_a")};
+  force_.pressure = {in.scalar("body_pressure_force_x"), in.scalar("body_pressure_force_y")};
+  force_.viscous = {in.scalar("body_viscous_force_x"), in.scalar("body_viscous_force_y")};
+  held_ = in.integer("body_held") != 0;
+}
+
+namespace {
+/// The columns of a history, in the order of block.csv.
+template <class F>
+void for_each_history_column(F&& f) {
+  f(
+      "time", [](auto& b) -> auto& { return b.time; });
+  f(
+      "S", [](auto& b) -> auto& { return b.state.s; });
+  f(
+      "U", [](auto& b) -> auto& { return b.state.u; });
+  f(
+      "A", [](auto& b) -> auto& { return b.state.a; });
+  f(
+      "pressure_force_x", [](auto& b) -> auto& { return b.force.pressure.x; });
+  f(
+      "pressure_force_y", [](auto& b) -> auto& { return b.force.pressure.y; });
+  f(
+      "viscous_force_x", [](auto& b) -> auto& { return b.force.viscous.x; });
+  f(
+      "viscous_force_y", [](auto& b) -> auto& { return b.force.viscous.y; });
+  f(
+      "normal", [](auto& b) -> auto& { return b.normal; });
+  f(
+      "along", [](auto& b) -> auto& { return b.along; });
+}
+}  // namespace
+
+void save_history(StateWriter& out, const std::vector<BodySample>& history) {
+  std::vector<double> column(history.size());
+  for_each_history_column([&](const char* name, auto get) {
+    for (std::size_t k = 0; k < history.size(); ++k) column[k] = get(history[k]);
+    out.field(std::string("body_history_") + name, {column.data()}, column.size());
+  });
+}
+
+std::vector<BodySample> load_history(StateReader& in) {
+  std::vector<BodySample> history(in.count("body_history_time"));
+  std::vector<double> column(history.size());
+  for_each_history_column([&](const char* name, auto get) {
+    in.field(std::string("body_history_") + name, {column.data()}, column.size());
+    for (std::size_t k = 0; k < history.size(); ++k) get(history[k]) = column[k];
+  });
+  return history;
 }
 
 }  // namespace wcmps

@@ -32,6 +32,7 @@
 #include "particles/ParticleSet.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
+#include "simulation/StateArchive.h"
 
 namespace wcmps {
 
@@ -89,6 +90,10 @@ class SlidingBody {
   std::pair<double, double> support(const SlideState& s, const BodyForce& f) const;
   BodySample sample(double time) const;
 
+  /// Its state (S, U, A, the last force, held or not), for checkpoints.
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
+
  private:
   double free_acceleration(double u, const BodyForce& f) const;
 
@@ -102,5 +107,9 @@ class SlidingBody {
   BodyForce force_;
   bool held_ = false;
 };
+
+/// A body's history (block.csv) in a checkpoint: a field per column.
+void save_history(StateWriter& out, const std::vector<BodySample>& history);
+std::vector<BodySample> load_history(StateReader& in);
 
 }  // namespace wcmps

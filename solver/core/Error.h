@@ -39,6 +39,13 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A checkpoint that cannot be used to continue a run: none there, unreadable, incomplete, or
+/// written for another case or scene.
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Description of the first particle that failed a stability check.
 struct InstabilityReport {
   std::int64_t step = 0;  ///< step at which the check failed (1-based)

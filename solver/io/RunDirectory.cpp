@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "io/AtomicFile.h"
+#include "io/Checkpoint.h"
 
 namespace fs = std::filesystem;
 
@@ -26,7 +27,20 @@ bool is_run_file(const fs::path& name) {
   if (s.find(".tmp-") != std::string::npos) return true;
   return s == RunFiles::kSeries || s == RunFiles::kSummary || s == RunFiles::kLog ||
          s == RunFiles::kCase || s == RunFiles::kBody || s == RunFiles::kGauges ||
-         s == RunFiles::kPost || (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
+         s == RunFiles::kPost || CheckpointStore::is_checkpoint_name(s) ||
+         (starts(RunFiles::kFramePrefix) && name.extension() == ".vtp");
+}
+
+void remove_stale_temporaries(const fs::path& dir) {
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) stale.push_back(e.path());
+  }
+  for (const auto& p : stale) {
+    fs::remove(p, ec);
+    if (ec) throw IoError("cannot remove " + p.string() + ": " + ec.message());
+  }
 }
 
 void prepare_run_directory(const fs::path& dir, bool overwrite) {

@@ -26,9 +26,12 @@ struct RunFiles {
 /// IoError naming the directory and the reason; checks that it is writable.
 void prepare_run_directory(const std::filesystem::path& dir, bool overwrite);
 
-/// True for the names a run writes (series, summary, log, case copy, frames, temporaries) and
-/// for the post directory made from it.
+/// True for the names a run writes (series, summary, log, case copy, frames, checkpoints,
+/// temporaries) and for the post directory made from it.
 bool is_run_file(const std::filesystem::path& name);
+
+/// Removes the files a run was writing when it was killed (their temporary names).
+void remove_stale_temporaries(const std::filesystem::path& dir);
 
 /// For the commands that read a finished run (post, figures): empty if `dir` holds one (its
 /// series and case copy), else what is wrong, as the end of an error message naming `dir`.

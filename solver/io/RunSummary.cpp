@@ -9,12 +9,12 @@ namespace wcmps {
 
 double RunSummary::particle_steps_per_second() const {
   const double s = stepping_seconds();
-  return s > 0.0 ? static_cast<double>(particles()) * stats.steps / s : 0.0;
+  return s > 0.0 ? static_cast<double>(particles()) * segment_steps() / s : 0.0;
 }
 
 double RunSummary::fluid_particle_steps_per_second() const {
   const double s = stepping_seconds();
-  return s > 0.0 ? static_cast<double>(fluid) * stats.steps / s : 0.0;
+  return s > 0.0 ? static_cast<double>(fluid) * segment_steps() / s : 0.0;
 }
 
 double RunSummary::pairs_per_second() const {
@@ -27,6 +27,11 @@ nlohmann::json RunSummary::to_json() const {
   j["version"] = version;
   j["case"] = {{"name", case_name}, {"file", case_file}, {"copy", "case.toml"}};
   j["status"] = status;
+  if (stats.stop_signal != 0) j["stop_signal"] = stats.stop_signal;
+  if (stats.resumed) {
+    j["restart"] = {
+        {"checkpoint", restarted_from}, {"time", stats.first_time}, {"step", stats.first_step}};
+  }
   if (instability) {
     j["instability"] = {{"step", instability->step},
                         {"time", instability->time},
@@ -66,6 +71,8 @@ nlohmann::json RunSummary::to_json() const {
   j["performance"] = {{"wall_seconds", stats.wall_seconds},
                       {"output_seconds", stats.output_seconds},
                       {"settle_seconds", stats.settle_seconds},
+                      {"checkpoint_seconds", stats.checkpoint_seconds},
+                      {"checkpoints", stats.checkpoints},
                       {"threads", threads},
                       {"particle_steps_per_second", particle_steps_per_second()},
                       {"fluid_particle_steps_per_second", fluid_particle_steps_per_second()},
@@ -87,6 +94,11 @@ std::string RunSummary::to_text() const {
     out += '\n';
   };
   line("status              %s", status.c_str());
+  if (stats.stop_signal != 0) line("stopped by signal   %d", stats.stop_signal);
+  if (stats.resumed) {
+    line("continued from      %s (t = %g s, step %lld); the figures below are of this part",
+         restarted_from.c_str(), stats.first_time, static_cast<long long>(stats.first_step));
+  }
   if (instability) line("instability         %s", instability->str().c_str());
   line("particles           %lld (fluid %lld, wall %lld, ghost %lld)",
        static_cast<long long>(particles()), static_cast<long long>(fluid),
@@ -107,8 +119,11 @@ std::string RunSummary::to_text() const {
   }
   line("frames              %lld", static_cast<long long>(stats.frames));
   line("wall collisions     %lld particle-steps", static_cast<long long>(wall_collisions));
-  line("wall time           %.3f s (%.3f s writing frames), %d threads", stats.wall_seconds,
-       stats.output_seconds, threads);
+  line(
+      "wall time           %.3f s (%.3f s writing frames, %.3f s writing %lld checkpoints), %d "
+      "threads",
+      stats.wall_seconds, stats.output_seconds, stats.checkpoint_seconds,
+      static_cast<long long>(stats.checkpoints), threads);
   line("particle-steps/s    %.4g (fluid only %.4g)", particle_steps_per_second(),
        fluid_particle_steps_per_second());
   line("neighbour pairs/s   %.4g (lists built %lld times)", pairs_per_second(),
@@ -151,6 +166,7 @@ RunSummary summarize(const CaseSpec& spec, const Simulation& sim, const RunStats
                                  sim.timer().seconds(static_cast<Phase>(p)));
   }
   r.phase_seconds.emplace_back("output", stats.output_seconds);
+  r.phase_seconds.emplace_back("checkpoint", stats.checkpoint_seconds);
   r.sections = spec.sections;
   if (const SlidingBody* b = sim.body()) r.body = b->sample(sim.time());
   return r;

@@ -19,7 +19,7 @@ namespace wcmps {
 struct RunSummary {
   std::string version;
   std::string case_name, case_file;
-  std::string status;  ///< "completed" or "unstable"
+  std::string status;  ///< "completed", "unstable" or "stopped" (by a signal)
   std::optional<InstabilityReport> instability;
   std::int64_t fluid = 0, wall = 0, ghost = 0;
   double dl = 0.0, re = 0.0, n0 = 0.0, lambda = 0.0, c0 = 0.0;
@@ -35,6 +35,7 @@ struct RunSummary {
   std::vector<std::pair<std::string, double>> phase_seconds;
   std::vector<SectionSpec> sections;  ///< measuring sections of the case
   std::optional<BodySample> body;     ///< the block's state at the end
+  std::string restarted_from;         ///< the checkpoint a continued run started from
 
   std::int64_t particles() const { return fluid + wall + ghost; }
   /// All particles times steps, per wall second of stepping (frame output excluded).
@@ -42,8 +43,11 @@ struct RunSummary {
   double fluid_particle_steps_per_second() const;
   double pairs_per_second() const;
   double stepping_seconds() const {
-    return stats.wall_seconds - stats.output_seconds - stats.settle_seconds;
+    return stats.wall_seconds - stats.output_seconds - stats.settle_seconds -
+           stats.checkpoint_seconds;
   }
+  /// Steps of this part of the run (all of it unless continued from a checkpoint).
+  double segment_steps() const { return static_cast<double>(stats.steps - stats.first_step); }
 
   nlohmann::json to_json() const;
   std::string to_text() const;

@@ -178,25 +178,66 @@ void VtpSeriesWriter::write_frame(const Simulation& sim) {
     fd->AddArray(lines);
   }
 
-  char file[64];
-  std::snprintf(file, sizeof file, "%s%06zu.vtp", RunFiles::kFramePrefix, entries_.size());
+  const std::string file = frame_name(entries_.size());
   const fs::path path = dir_ / file;
-  const fs::path tmp = temporary_path_for(path);
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(poly);
-  writer->SetFileName(tmp.c_str());
   // Inline binary (base64 of LZ4 blocks), not appended: with Debian 12's Expat (security
   // fixes of 2.5.0-1+deb12u*), ParaView 5.11's reader fails on appended data of more than a
   // few kB ("not well-formed (invalid token)"), raw or encoded. Pinned by a test.
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToLZ4();
+  // Encoded in memory, written by us: VTK 9.2's XML writer frees an invalid pointer when a
+  // write fails part-way (disk full), and this way the file is written atomically.
+  writer->WriteToOutputStringOn();
   if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw IoError("cannot write frame " + path.string() + " (disk full or not writable?)");
+    throw IoError("cannot encode frame " + path.string());
   }
-  replace_file(tmp, path);
+  write_file_atomically(path, writer->GetOutputString());
   entries_.push_back({sim.time(), sim.steps(), file});
+  write_series();
+}
+
+std::string VtpSeriesWriter::frame_name(std::size_t index) {
+  char file[64];
+  std::snprintf(file, sizeof file, "%s%06zu.vtp", RunFiles::kFramePrefix, index);
+  return file;
+}
+
+void VtpSeriesWriter::save(StateWriter& out) const {
+  std::vector<double> times;
+  std::vector<std::int64_t> steps;
+  for (const auto& e : entries_) {
+    times.push_back(e.time);
+    steps.push_back(e.step);
+  }
+  out.field("frame_time", {times.data()}, times.size());
+  out.field("frame_step", steps.data(), steps.size());
+}
+
+void VtpSeriesWriter::load(StateReader& in) {
+  const std::size_t n = in.count("frame_time");
+  std::vector<double> times(n);
+  std::vector<std::int64_t> steps(n);
+  in.field("frame_time", {times.data()}, n);
+  in.field("frame_step", steps.data(), n);
+  entries_.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string file = frame_name(k);
+    if (!fs::exists(dir_ / file)) {
+      throw CheckpointError("frame " + (dir_ / file).string() +
+                            " of the checkpoint's series is missing");
+    }
+    entries_.push_back({times[k], steps[k], file});
+  }
+  // Frames written after the checkpoint: the continued run writes them again.
+  std::error_code ec;
+  for (std::size_t k = n;; ++k) {
+    const fs::path later = dir_ / frame_name(k);
+    if (!fs::exists(later, ec)) break;
+    fs::remove(later, ec);
+    if (ec) throw IoError("cannot remove " + later.string() + ": " + ec.message());
+  }
   write_series();
 }
 

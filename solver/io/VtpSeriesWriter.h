@@ -18,12 +18,16 @@
 
 #include "scene/CaseSpec.h"
 #include "simulation/Runner.h"
+#include "simulation/StateArchive.h"
 
 namespace wcmps {
 
 class VtpSeriesWriter : public FrameSink {
  public:
   VtpSeriesWriter(std::filesystem::path dir, const CaseSpec& spec);
+
+  /// Writes an empty series.pvd, so that a new run directory holds a series from the start.
+  void start() const { write_series(); }
 
   /// Writes the simulation's current state as the next frame (once per step: a second call at
   /// the same step is ignored).
@@ -36,8 +40,15 @@ class VtpSeriesWriter : public FrameSink {
   };
   const std::vector<Entry>& entries() const { return entries_; }
 
+  /// The frames written so far, for checkpoints. load() takes the series back to those frames:
+  /// frames written after the checkpoint are deleted and series.pvd is rewritten, so that a
+  /// continued run appends where the checkpoint was taken.
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
+
  private:
   void write_series() const;
+  static std::string frame_name(std::size_t index);
 
   std::filesystem::path dir_;
   std::string case_name_;

@@ -671,6 +671,13 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     r.finish();
   }
   {
+    TableReader r(section(root, "checkpoint", empty), "[checkpoint]", path);
+    c.checkpoint_interval = r.number("interval", 0.0, 0.0, kInf);
+    c.checkpoint_wall_interval = r.number("wall_interval", 600.0, 0.0, kInf);
+    c.checkpoint_keep = static_cast<int>(r.integer("keep", 2, 1, 1000));
+    r.finish();
+  }
+  {
     TableReader r(section(root, "neighbours", empty), "[neighbours]", path);
     c.neighbour_skin = r.number("skin", 0.2, 0.0, 2.0, true);
     c.sort_interval = static_cast<int>(r.integer("sort_interval", 50, 0, 1000000));

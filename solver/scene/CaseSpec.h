@@ -195,6 +195,11 @@ struct CaseSpec {
   std::vector<ParticleKind> output_kinds;
   bool output_double_precision = false;
 
+  // [checkpoint] (docs/checkpoints.md)
+  double checkpoint_interval = 0.0;         ///< s of simulated time between checkpoints; 0: not
+  double checkpoint_wall_interval = 600.0;  ///< s of wall time between checkpoints; 0: not
+  int checkpoint_keep = 2;                  ///< newest checkpoints kept
+
   // [neighbours]
   double neighbour_skin =
       0.2;  ///< list cutoff = re + skin x DL; lists kept while particles move < skin/2

@@ -27,6 +27,18 @@ std::vector<double> output_times(const CaseSpec& spec, double end_time) {
   return t;
 }
 
+void RunStats::save(StateWriter& out) const {
+  out.scalar("run_dt_min", dt_min);
+  out.scalar("run_dt_max", dt_max);
+  out.integer("run_frames", frames);
+}
+
+void RunStats::load(StateReader& in) {
+  dt_min = in.scalar("run_dt_min");
+  dt_max = in.scalar("run_dt_max");
+  frames = in.integer("run_frames");
+}
+
 RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>& progress,
                      double progress_interval) {
   using clock = std::chrono::steady_clock;
@@ -34,13 +46,27 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
   auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
   stats_ = {};
   stats_.dt_min = std::numeric_limits<double>::infinity();
+  stats_.dt_max = 0.0;
+  if (resumed_) {
+    stats_.dt_min = before_.dt_min;
+    stats_.dt_max = before_.dt_max;
+    stats_.frames = before_.frames;
+    stats_.resumed = true;
+    stats_.first_step = sim_.steps();
+    stats_.first_time = sim_.time();
+  }
   const bool fixed = sim_.time_step_rule().mode == TimeStepMode::Fixed;
   // A fixed step cannot be shortened; a frame is due once the time is within half a step.
   const double tolerance = fixed ? 0.5 * sim_.time_step_rule().fixed : 0.0;
   std::size_t next = 0;
   double last_report = -1.0;
   // Rate of simulated time per wall second, smoothed, for the estimate of time left.
-  double rate = 0.0, rate_t = 0.0, rate_wall = 0.0;
+  double rate = 0.0, rate_t = sim_.time(), rate_wall = 0.0;
+  // A continued run has written the frames of the times it has passed.
+  const bool started = resumed_ && !sim_.settling();
+  if (started) {
+    while (next < times_.size() && sim_.time() >= times_[next] - tolerance) ++next;
+  }
 
   auto write_due = [&] {
     while (next < times_.size() && sim_.time() >= times_[next] - tolerance) {
@@ -72,12 +98,72 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
     p.frames = stats_.frames;
     progress(p);
   };
+  auto update = [&] {
+    stats_.steps = sim_.steps();
+    stats_.simulated_time = sim_.time();
+    stats_.wall_seconds = wall();
+  };
+
+  // Checkpoints: at t = 0, every interval of simulated or wall time, at a stop, at the end.
+  double last_checkpoint_wall = 0.0;
+  std::int64_t last_checkpoint_step = started ? sim_.steps() : -1;
+  bool last_checkpoint_settling = sim_.settling();
+  double next_checkpoint_time = 0.0;
+  auto schedule_next = [&] {
+    const double dt = schedule_.interval;
+    next_checkpoint_time = dt > 0.0 ? (std::floor(sim_.time() / dt + 1e-9) + 1.0) * dt
+                                    : std::numeric_limits<double>::infinity();
+  };
+  schedule_next();
+  auto checkpoint = [&] {
+    if (sim_.steps() == last_checkpoint_step && sim_.settling() == last_checkpoint_settling) {
+      return;  // this state is the newest checkpoint already
+    }
+    const double w0 = wall();
+    update();
+    sink.checkpoint(sim_, stats_);
+    stats_.checkpoint_seconds += wall() - w0;
+    ++stats_.checkpoints;
+    last_checkpoint_wall = wall();
+    last_checkpoint_step = sim_.steps();
+    last_checkpoint_settling = sim_.settling();
+    schedule_next();
+  };
+  auto checkpoint_due = [&] {
+    return sim_.time() >= next_checkpoint_time - tolerance ||
+           (schedule_.wall_interval > 0.0 &&
+            wall() - last_checkpoint_wall >= schedule_.wall_interval);
+  };
+  // A stop asked for (a signal): checkpoint and leave. The series is complete as it is.
+  auto stopped = [&] {
+    const int signal = stop_ ? stop_() : 0;
+    if (signal == 0) return false;
+    checkpoint();
+    stats_.stop_signal = signal;
+    update();
+    return true;
+  };
 
   try {
-    sim_.settle();
-    stats_.settle_seconds = wall();
-    sink.after_step(sim_);
-    write_due();
+    if (!started) {
+      const double w0 = wall();
+      while (sim_.settling()) {
+        sim_.settle_step();
+        if (stopped()) {
+          stats_.settle_seconds = wall() - w0;
+          return stats_;
+        }
+        if (schedule_.wall_interval > 0.0 &&
+            wall() - last_checkpoint_wall >= schedule_.wall_interval) {
+          checkpoint();
+        }
+      }
+      stats_.settle_seconds = wall() - w0;
+      sink.after_step(sim_);
+      write_due();
+      checkpoint();
+      if (stopped()) return stats_;
+    }
     while (sim_.time() < end_ - tolerance) {
       const double stop = next < times_.size() ? std::min(times_[next], end_) : end_;
       sim_.step(stop);
@@ -86,21 +172,21 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
       sink.after_step(sim_);
       write_due();
       report(false);
+      if (stopped()) return stats_;
+      if (checkpoint_due()) checkpoint();
     }
+    // The end: a checkpoint from which the run can be continued to a later end time.
+    checkpoint();
   } catch (const InstabilityError&) {
     // The simulation still holds the last good state: keep it as the final frame.
     sink.write_frame(sim_);
     ++stats_.frames;
-    stats_.steps = sim_.steps();
-    stats_.simulated_time = sim_.time();
-    stats_.wall_seconds = wall();
+    update();
     throw;
   }
-  stats_.steps = sim_.steps();
-  stats_.simulated_time = sim_.time();
-  stats_.wall_seconds = wall();
+  update();
   stats_.completed = true;
-  if (stats_.steps == 0) stats_.dt_min = 0.0;
+  if (!std::isfinite(stats_.dt_min)) stats_.dt_min = 0.0;
   report(true);
   return stats_;
 }

@@ -63,7 +63,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       max_density_ratio_(spec.max_density_ratio),
       sort_interval_(spec.sort_interval),
       settle_time_(spec.settle_time),
-      settle_damping_(spec.settle_damping) {
+      settle_damping_(spec.settle_damping),
+      settling_(spec.settle_time > 0.0) {
   rule_ = wcmps::time_step_rule(spec, scene_.sound_speed);
   ParticleSet& ps = scene_.particles;
   grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
@@ -211,19 +212,18 @@ void Simulation::step(double t_stop) {
   }
 }
 
-void Simulation::settle() {
-  if (!(settle_time_ > 0.0)) return;
+void Simulation::settle_step() {
+  if (!settling_) return;
   ParticleSet& ps = scene_.particles;
   if (body_) body_->hold(true);  // the block is released at t = 0
-  while (time_ < settle_time_) {
-    step(settle_time_);
-    const double keep = std::exp(-last_dt_ / settle_damping_);
-    max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-      ps.now.u[i] *= keep;
-      ps.now.v[i] *= keep;
-      return std::sqrt(sq(ps.now.u[i]) + sq(ps.now.v[i]));
-    });
-  }
+  step(settle_time_);
+  const double keep = std::exp(-last_dt_ / settle_damping_);
+  max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    ps.now.u[i] *= keep;
+    ps.now.v[i] *= keep;
+    return std::sqrt(sq(ps.now.u[i]) + sq(ps.now.v[i]));
+  });
+  if (time_ < settle_time_) return;
   parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     ps.now.u[i] = 0.0;
     ps.now.v[i] = 0.0;
@@ -234,12 +234,78 @@ void Simulation::settle() {
     body_->reset_motion();
     body_history_ = {body_->sample(0.0)};
   }
+  settling_ = false;
   settle_steps_ = steps_;
   steps_ = 0;
   time_ = 0.0;
   // The run's performance figures count the run, not the settling.
   pairs_visited_ = 0;
   wall_collisions_ = 0;
+  timer_.reset();
+}
+
+void Simulation::save(StateWriter& out) const {
+  const ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  const auto n = static_cast<std::size_t>(ps.size());
+  out.field("position", {s.x.data(), s.y.data()}, n);
+  out.field("velocity", {s.u.data(), s.v.data()}, n);
+  out.field("pressure", {s.p.data()}, n);
+  out.field("number_density", {s.n.data()}, n);
+  out.field("free_surface", s.surface.data(), n);
+  out.field("id", ps.id.data(), n);
+  out.field("position_at_list_build", {x_built_.data(), y_built_.data()}, n);
+  out.scalar("time", time_);
+  out.integer("steps", steps_);
+  out.scalar("last_dt", last_dt_);
+  out.scalar("max_speed", max_speed_);
+  out.scalar("drift", drift_);
+  out.integer("last_sort_step", last_sort_step_);
+  out.integer("wall_collisions", wall_collisions_);
+  out.integer("settling", settling_ ? 1 : 0);
+  out.integer("settle_steps", settle_steps_);
+  if (body_) {
+    body_->save(out);
+    out.scalar("body_s_at_list_build", body_built_s_);
+    save_history(out, body_history_);
+  }
+}
+
+void Simulation::load(StateReader& in) {
+  ParticleSet& ps = scene_.particles;
+  ParticleState& s = ps.now;
+  const auto n = static_cast<std::size_t>(ps.size());
+  in.field("position", {s.x.data(), s.y.data()}, n);
+  in.field("velocity", {s.u.data(), s.v.data()}, n);
+  in.field("pressure", {s.p.data()}, n);
+  in.field("number_density", {s.n.data()}, n);
+  in.field("free_surface", s.surface.data(), n);
+  in.field("id", ps.id.data(), n);
+  in.field("position_at_list_build", {x_built_.data(), y_built_.data()}, n);
+  // Between steps `next` holds the same boundary particles as `now`; the rest is scratch.
+  ps.next = ps.now;
+  time_ = in.scalar("time");
+  steps_ = in.integer("steps");
+  last_dt_ = in.scalar("last_dt");
+  max_speed_ = in.scalar("max_speed");
+  drift_ = in.scalar("drift");
+  last_sort_step_ = in.integer("last_sort_step");
+  wall_collisions_ = in.integer("wall_collisions");
+  settling_ = in.integer("settling") != 0;
+  settle_steps_ = in.integer("settle_steps");
+  if (body_) {
+    body_->load(in);
+    body_built_s_ = in.scalar("body_s_at_list_build");
+    const std::vector<BodySample> history = load_history(in);
+    body_history_.assign(history.begin(), history.end());  // keeps the run's reservation
+  }
+  grid_.bin(x_built_.data(), y_built_.data(), ps.size());
+  neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), ops_.re() + skin_,
+                    list_owners_);
+  if (body_) find_fluid_near_body();
+  built_ = true;
+  builds_ = 0;
+  pairs_visited_ = 0;
   timer_.reset();
 }
 
@@ -261,7 +327,8 @@ void Simulation::rebuild_neighbours() {
   grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
   neighbours_.build(grid_, ps.now.x.data(), ps.now.y.data(), ps.size(), ops_.re() + skin_,
                     list_owners_);
-  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+  // All of them (the body's move), so that a checkpoint can rebuild these lists.
+  parallel_for(0, ps.size(), [&](std::int64_t i) {
     x_built_[i] = ps.now.x[i];
     y_built_[i] = ps.now.y[i];
   });

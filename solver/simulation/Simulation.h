@@ -21,6 +21,7 @@
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/PhaseTimer.h"
+#include "simulation/StateArchive.h"
 
 namespace wcmps {
 
@@ -34,13 +35,19 @@ class Simulation {
   void step(double t_stop);
 
   /// Settling before t = 0 (dynamic relaxation), if the case asks for it ([particles]
-  /// settle_time): runs the scene for settle_time seconds with every fluid velocity damped by
-  /// exp(-dt / settle_damping) after each step, then sets the velocities to zero, the clock
-  /// and the step count to zero, and the performance counters too. The water then starts in
-  /// the discrete equilibrium of its particles and walls instead of the hydrostatic state of
-  /// the lattice, which along an inclined bed is kilopascals off (docs/method.md). Throws
+  /// settle_time): the scene runs for settle_time seconds with every fluid velocity damped by
+  /// exp(-dt / settle_damping) after each step; then the velocities, the clock, the step count
+  /// and the performance counters are set to zero. The water then starts in the discrete
+  /// equilibrium of its particles and walls instead of the hydrostatic state of the lattice,
+  /// which along an inclined bed is kilopascals off (docs/method.md). The body is held.
+  /// settle_step() is one such step (the one that reaches settle_time ends settling), so that
+  /// a run can checkpoint and stop during settling; settle() does all of it. Both throw
   /// InstabilityError like step().
-  void settle();
+  bool settling() const { return settling_; }
+  void settle_step();
+  void settle() {
+    while (settling_) settle_step();
+  }
   std::int64_t settle_steps() const { return settle_steps_; }
 
   /// The rigid body of the scene (the block), if it has one.
@@ -61,6 +68,15 @@ class Simulation {
   const MpsOperators& operators() const { return ops_; }
   const TimeStepRule& time_step_rule() const { return rule_; }
   const PhaseTimer& timer() const { return timer_; }
+  /// The state a continued run needs, for checkpoints: every particle's fields, the
+  /// positions the neighbour lists were built from (on loading, the lists are rebuilt from them
+  /// pair for pair in the same order, so a continued run sums in the same order as one that
+  /// was not stopped), the clock, the body and its history. load() takes a state saved by a
+  /// simulation of the same scene; it throws CheckpointError if the counts differ. The
+  /// performance counters (timer, pairs visited, list builds) start again from zero.
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
+
   /// Neighbour entries visited by the operators so far (one per (i, j) per operator pass).
   std::int64_t pairs_visited() const { return pairs_visited_; }
   /// Fluid particle-steps whose velocity the wall collision model changed.
@@ -134,6 +150,7 @@ class Simulation {
   std::int64_t pairs_visited_ = 0;
   std::int64_t wall_collisions_ = 0, next_collisions_ = 0;
   std::int64_t settle_steps_ = 0;
+  bool settling_ = false;
 
   std::optional<SlidingBody> body_;
   SlideState body_next_;                 // of the step in progress

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/Error.h"
 #include "operators/WaterSpan.h"
 #include "simulation/Simulation.h"
 
@@ -76,6 +77,19 @@ std::string WaveGauges::csv() const {
     out += '\n';
   }
   return out;
+}
+
+void WaveGauges::save(StateWriter& out) const {
+  out.field("gauge_samples", {values_.data()}, values_.size());
+  out.scalar("gauge_next_time", next_);
+}
+
+void WaveGauges::load(StateReader& in) {
+  const std::size_t n = in.count("gauge_samples");
+  if (n % width() != 0) throw CheckpointError("gauge samples do not match the case's gauges");
+  values_.resize(n);  // within the run's reservation
+  in.field("gauge_samples", {values_.data()}, n);
+  next_ = in.scalar("gauge_next_time");
 }
 
 }  // namespace wcmps

@@ -11,6 +11,7 @@
 #include "neighbours/CellGrid.h"
 #include "operators/Kernel.h"
 #include "scene/CaseSpec.h"
+#include "simulation/StateArchive.h"
 
 namespace wcmps {
 
@@ -29,6 +30,10 @@ class WaveGauges {
 
   /// The samples so far: a header naming each gauge's x, then a row per sample.
   std::string csv() const;
+
+  /// The samples and the next sample time, for checkpoints.
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
   /// Samples taken so far, and sample k: its time, then eta at each gauge.
   std::size_t sample_count() const { return values_.size() / width(); }
