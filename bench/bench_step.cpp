@@ -1,0 +1,71 @@
+// Google Benchmark of the time step: wall time per step and particle-steps per second against
+// particle count and threads (docs/performance.md, "Scaling").
+//
+// - DamBreak/DL_um/threads: cases/dambreak at DL (um), from the collapse's first steps (a
+//   flow with every phase busy); DL 2 mm gives about 20,000 particles.
+// - CaseI/DL_um/threads: the study's case I (cases/caseI) from t = 0 without settling, the
+//   block moving, from DL 7 mm (27,000 particles) to the fine 2 mm case (316,000).
+//
+// Each iteration is one Simulation::step(); the scene is built and 20 steps are taken before
+// timing. Run:
+//   build/bin/bench_step --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+//   build/bin/bench_step --benchmark_filter='DamBreak/2000/'   (one size)
+// The smoke test (ctest -R bench.step_smoke) runs the coarsest dam break for a few steps.
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+
+#include "core/Parallel.h"
+#include "scene/CaseParser.h"
+#include "scene/SceneBuilder.h"
+#include "simulation/Simulation.h"
+
+namespace {
+
+using namespace wcmps;
+
+std::unique_ptr<Simulation> make(const std::string& case_dir, double dl) {
+  CaseSpec spec =
+      parse_case_file(std::string(WCMPS_SOURCE_DIR) + "/cases/" + case_dir + "/case.toml");
+  spec.dl = dl;
+  spec.settle_time = 0.0;
+  spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
+  auto sim = std::make_unique<Simulation>(spec, build_scene(spec));
+  for (int k = 0; k < 20; ++k) sim->step(spec.end_time);
+  return sim;
+}
+
+void step(benchmark::State& state, const char* case_dir) {
+  const double dl = static_cast<double>(state.range(0)) * 1e-6;
+  set_thread_count(static_cast<int>(state.range(1)));
+  const auto sim = make(case_dir, dl);
+  for (auto _ : state) sim->step(100.0);
+  const auto particles = static_cast<double>(sim->particles().size());
+  state.counters["particles"] = particles;
+  state.counters["particle_steps_per_s"] = benchmark::Counter(
+      particles * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void DamBreak(benchmark::State& state) {
+  step(state, "dambreak");
+}
+void CaseI(benchmark::State& state) {
+  step(state, "caseI");
+}
+
+BENCHMARK(DamBreak)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{10000, 5000, 3500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{7000, 5000, 3500, 2500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
