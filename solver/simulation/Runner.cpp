@@ -149,6 +149,9 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
       const double w0 = wall();
       while (sim_.settling()) {
         sim_.settle_step();
+        // Once settling is over, the state is that of t = 0, whose frames come first: a stop
+        // or a checkpoint waits for them (a run continued from here writes no t = 0 frame).
+        if (!sim_.settling()) break;
         if (stopped()) {
           stats_.settle_seconds = wall() - w0;
           return stats_;

@@ -13,6 +13,7 @@
 #include "io/Checkpoint.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
+#include "simulation/Runner.h"
 #include "simulation/Simulation.h"
 #include "support/TestSupport.h"
 
@@ -183,6 +184,59 @@ TEST(Checkpoint, AContinuedSimulationIsIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(from_settling.settle_steps(), reference.settle_steps());
   for (int k = 0; k < 120; ++k) from_settling.step(spec.end_time);
   EXPECT_TRUE(state_bytes(from_settling) == expected) << "the run continued from settling differs";
+}
+
+/// Records frame times; writes checkpoints of the simulation and the run's figures.
+struct RecordingSink : FrameSink {
+  RecordingSink(CheckpointStore& s, const std::string& text) : store(s), case_text(text) {}
+  void write_frame(const Simulation& sim) override { times.push_back(sim.time()); }
+  void checkpoint(const Simulation& sim, const RunStats& stats) override {
+    store.write(case_text, [&](StateWriter& w) {
+      sim.save(w);
+      stats.save(w);
+    });
+  }
+  CheckpointStore& store;
+  const std::string& case_text;
+  std::vector<double> times;
+};
+
+TEST(Checkpoint, AStopAsSettlingEndsKeepsTheFirstFrame) {
+  // A signal seen right after the last settling step: the run stops after the frame of t = 0,
+  // so that the frames of the stopped and the continued run are those of an uninterrupted one.
+  CaseSpec spec = parse_case_file(test::source_path("tests/cli/restart.toml"));
+  spec.end_time = 0.04;
+  const auto times = output_times(spec, spec.end_time);
+  const fs::path dir = test::scratch_dir("checkpoint_stop_at_settled");
+  CheckpointStore store(dir, 2);
+
+  Simulation sim(spec, build_scene(spec));
+  RecordingSink first(store, spec.source_text);
+  Runner runner(sim, times, spec.end_time);
+  runner.set_stop_request([&] { return sim.settling() ? 0 : 15; });
+  const RunStats stopped = runner.run(first, nullptr);
+  EXPECT_EQ(stopped.stop_signal, 15);
+  EXPECT_FALSE(stopped.completed);
+
+  Simulation continued(spec, build_scene(spec));
+  RunStats before;
+  std::vector<std::string> rejected;
+  store.load_newest(
+      spec.source_text,
+      [&](StateReader& r) {
+        continued.load(r);
+        before.load(r);
+      },
+      rejected);
+  RecordingSink second(store, spec.source_text);
+  Runner rest(continued, times, spec.end_time);
+  rest.resume(before);
+  EXPECT_TRUE(rest.run(second, nullptr).completed);
+
+  // Exact: the Courant step lands on each output time, and frames record it.
+  std::vector<double> all = first.times;
+  all.insert(all.end(), second.times.begin(), second.times.end());
+  EXPECT_EQ(all, times) << "frames of the stopped run: " << first.times.size();
 }
 
 TEST(Checkpoint, AnotherSceneIsRefused) {
