@@ -35,44 +35,13 @@
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
+#include "support/DamBreakFront.h"
 
 namespace {
 
 using namespace wcmps;
 
-constexpr double kG = 9.81;
-constexpr double kA = 0.2;       // dam-break column width (m)
-constexpr double kShift = 0.15;  // time-origin shift in T (docs/validation.md)
-
-struct Point {
-  double T, Z;
-};
-
-std::vector<Point> martin_moyce(const std::string& source_dir) {
-  std::ifstream in(source_dir + "/cases/dambreak/martin_moyce_1952.csv");
-  if (!in) throw std::runtime_error("cannot read cases/dambreak/martin_moyce_1952.csv");
-  std::vector<Point> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream s(line);
-    Point p{};
-    char comma = 0;
-    s >> p.T >> comma >> p.Z;
-    out.push_back(p);
-  }
-  return out;
-}
-
-double interpolate(const std::vector<Point>& c, double T) {
-  for (std::size_t k = 1; k < c.size(); ++k) {
-    if (T <= c[k].T) {
-      const double w = (T - c[k - 1].T) / (c[k].T - c[k - 1].T);
-      return c[k - 1].Z + w * (c[k].Z - c[k - 1].Z);
-    }
-  }
-  return c.back().Z;
-}
+using namespace dambreak;
 
 struct Result {
   std::int64_t particles = 0, steps = 0;
@@ -103,7 +72,7 @@ Result run(const CaseSpec& spec, const std::vector<double>& times, Sample&& samp
   return r;
 }
 
-Result dambreak(CaseSpec spec, const std::vector<Point>& data) {
+Result dam_break(CaseSpec spec, const std::vector<Point>& data) {
   const double scale = std::sqrt(2.0 * kG / kA);  // T = t scale
   std::vector<double> times;
   for (double T = 0.02; T <= 3.5 + 1e-9; T += 0.02) times.push_back(T / scale);
@@ -119,16 +88,11 @@ Result dambreak(CaseSpec spec, const std::vector<Point>& data) {
     r.error = NAN;
     return r;
   }
-  double s = 0.0;
-  for (const auto& p : data) {
-    const double e = interpolate(front, p.T - kShift) - p.Z;
-    s += e * e;
-  }
-  r.error = std::sqrt(s / static_cast<double>(data.size()));
+  r.error = rms_front_error(front, data);
   return r;
 }
 
-Result hydrostatic(CaseSpec spec) {
+Result still_water(CaseSpec spec) {
   const double H = 0.7, end = 1.0, window = 0.25;
   std::vector<double> times;
   for (double t = 0.05; t <= end + 1e-9; t += 0.05) times.push_back(t);
@@ -224,7 +188,9 @@ int main(int argc, char** argv) {
          "wall_seconds_min,wall_seconds_max,error,error_measure,threads\n";
   try {
     const CaseSpec base = parse_case_file(source + "/cases/" + study + "/case.toml");
-    const auto data = study == "dambreak" ? martin_moyce(source) : std::vector<Point>{};
+    const auto data = study == "dambreak"
+                          ? martin_moyce(source + "/cases/dambreak/martin_moyce_1952.csv")
+                          : std::vector<Point>{};
     for (const auto& d : split(dls)) {
       for (const auto& rule : split(steps)) {
         for (const auto scheme : schemes) {
@@ -243,7 +209,7 @@ int main(int argc, char** argv) {
           std::vector<double> seconds;
           Result first;
           for (int k = 0; k < repeats; ++k) {
-            const Result r = study == "dambreak" ? dambreak(spec, data) : hydrostatic(spec);
+            const Result r = study == "dambreak" ? dam_break(spec, data) : still_water(spec);
             if (k == 0) first = r;
             if (k > 0 && r.steps != first.steps) {
               std::fprintf(stderr, "bench_work_precision: repeat %d took another path\n", k);

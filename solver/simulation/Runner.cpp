@@ -46,7 +46,6 @@ RunStats Runner::run(FrameSink& sink, const std::function<void(const Progress&)>
   auto wall = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
   stats_ = {};
   stats_.dt_min = std::numeric_limits<double>::infinity();
-  stats_.dt_max = 0.0;
   if (resumed_) {
     stats_.dt_min = before_.dt_min;
     stats_.dt_max = before_.dt_max;

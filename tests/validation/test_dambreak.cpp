@@ -11,35 +11,16 @@
 #include "core/Parallel.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
+#include "support/DamBreakFront.h"
 #include "support/TestSupport.h"
 
 namespace wcmps {
 namespace {
 
-constexpr double kA = 0.2;  // column width of cases/dambreak (m)
-constexpr double kG = 9.81;
-/// Time-origin shift: the experiment's T counts from a gate release that the data place late
-/// (validation.md: 0.1 ... 0.2 is commonly accepted). One fixed value for every resolution:
-/// Z_sim(T - kShift) is compared with Z_exp(T).
-constexpr double kShift = 0.15;
-
-struct Point {
-  double T, Z;
-};
+using namespace dambreak;
 
 std::vector<Point> measured() {
-  std::ifstream in(test::source_path("cases/dambreak/martin_moyce_1952.csv"));
-  std::vector<Point> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream s(line);
-    Point p;
-    char comma;
-    s >> p.T >> comma >> p.Z;
-    out.push_back(p);
-  }
-  return out;
+  return martin_moyce(test::source_path("cases/dambreak/martin_moyce_1952.csv"));
 }
 
 /// Front position (rightmost fluid particle plus half a spacing) every 0.02 in T, to T = 3.5.
@@ -67,25 +48,8 @@ std::vector<Point> run_front(double dl) {
   return out;
 }
 
-double interpolate(const std::vector<Point>& c, double T) {
-  for (std::size_t k = 1; k < c.size(); ++k) {
-    if (T <= c[k].T) {
-      const double w = (T - c[k - 1].T) / (c[k].T - c[k - 1].T);
-      return c[k - 1].Z + w * (c[k].Z - c[k - 1].Z);
-    }
-  }
-  return c.back().Z;
-}
-
-/// rms over the measured points of Z_sim(T - kShift) - Z_exp(T).
 double rms_front_error(const std::vector<Point>& sim) {
-  double s = 0.0;
-  const auto data = measured();
-  for (const auto& p : data) {
-    const double e = interpolate(sim, p.T - kShift) - p.Z;
-    s += e * e;
-  }
-  return std::sqrt(s / data.size());
+  return dambreak::rms_front_error(sim, measured());
 }
 
 // Tolerance: rms 0.15 in Z (a few percent of the 1 ... 4 range; published MPS and SPH runs of
