@@ -10,10 +10,18 @@
 
 namespace wcmps {
 
+namespace {
+constexpr const char* kTemporaryMark = ".tmp-";
+}  // namespace
+
 std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   auto tmp = path;
-  tmp += ".tmp-" + std::to_string(::getpid());
+  tmp += kTemporaryMark + std::to_string(::getpid());
   return tmp;
+}
+
+bool is_temporary_path(const std::filesystem::path& path) {
+  return path.filename().string().find(kTemporaryMark) != std::string::npos;
 }
 
 void replace_file(const std::filesystem::path& tmp, const std::filesystem::path& path) {

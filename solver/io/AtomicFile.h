@@ -11,6 +11,9 @@ namespace wcmps {
 /// A temporary name next to `path` (same directory, so that the rename is atomic).
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 
+/// Whether `path` is such a temporary name (left behind if the process was killed).
+bool is_temporary_path(const std::filesystem::path& path);
+
 /// Renames `tmp` onto `path`, replacing it; throws IoError (and removes tmp) on failure.
 void replace_file(const std::filesystem::path& tmp, const std::filesystem::path& path);
 

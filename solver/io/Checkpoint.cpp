@@ -31,12 +31,6 @@ class Handle {
   }
   hid_t get() const { return id_; }
   bool ok() const { return id_ >= 0; }
-  /// Closes now, reporting whether that worked (closing a file flushes it).
-  bool close() {
-    const herr_t r = id_ >= 0 ? close_(id_) : -1;
-    id_ = -1;
-    return r >= 0;
-  }
 
  private:
   hid_t id_;

@@ -24,7 +24,7 @@ std::string run_directory_problem(const fs::path& dir) {
 bool is_run_file(const fs::path& name) {
   const std::string s = name.filename().string();
   auto starts = [&](const std::string& p) { return s.rfind(p, 0) == 0; };
-  if (s.find(".tmp-") != std::string::npos) return true;
+  if (is_temporary_path(name)) return true;
   return s == RunFiles::kSeries || s == RunFiles::kSummary || s == RunFiles::kLog ||
          s == RunFiles::kCase || s == RunFiles::kBody || s == RunFiles::kGauges ||
          s == RunFiles::kPost || CheckpointStore::is_checkpoint_name(s) ||
@@ -35,7 +35,7 @@ void remove_stale_temporaries(const fs::path& dir) {
   std::error_code ec;
   std::vector<fs::path> stale;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.path().filename().string().find(".tmp-") != std::string::npos) stale.push_back(e.path());
+    if (is_temporary_path(e.path())) stale.push_back(e.path());
   }
   for (const auto& p : stale) {
     fs::remove(p, ec);

@@ -3,7 +3,8 @@
 
 usage: check_restart.py WCMPS CASE OUT_DIR MODE [TRIALS]
 
-MODE "stops": a reference run; then runs stopped by SIGTERM (after t = 0) and by SIGINT
+MODE "stops": a reference run; then runs stopped by SIGTERM (after t = 0; a stale temporary
+file is left for the restart to remove) and by SIGINT
 (during settling) and continued with `--restart` (with 1 thread where the reference had 2),
 which must end with the same files as the reference, byte for byte; a corrupted newest checkpoint (the older one is used); an edited case.toml, a run
 without checkpoints and a directory without a run (exit 7); a finished run continued to a later
@@ -151,6 +152,9 @@ def stops():
     if j["status"] != "stopped" or j["stop_signal"] != 15:
         fail(f"run.json after SIGTERM: status {j['status']}, stop_signal {j.get('stop_signal')}")
     series(d)
+    # What a killed run leaves while writing: a temporary name, which the restart removes.
+    with open(os.path.join(d, "frame_000099.vtp.tmp-12345"), "w") as f:
+        f.write("<VTKFile")
     err = expect(run("run", "--restart", d, "--threads", "1"), 0)
     if "continuing from checkpoint_" not in err:
         fail("the restart does not say where it continues from:\n" + err)
