@@ -172,6 +172,8 @@ def stops():
     expect(p, 130, "of settling")
     if not any("(settling)" in c for c in log_checkpoints(d)):
         fail("SIGINT during settling wrote no settling checkpoint")
+    if series(d) != []:
+        fail("a run stopped while settling has frames")  # but an (empty) series.pvd: series()
     expect(run("run", "--restart", d, "--threads", "2"), 0)
     same_files(ref, d, "SIGINT while settling + restart")
     print("SIGINT while settling: exit 130, restart gives the same files")
