@@ -4,9 +4,14 @@
 /// chapter 2.4, evaluated for one particle i over its neighbour list. Each function is the
 /// formula and nothing else: loops over particles and scheme choices live in the physics phases.
 ///
-/// Neighbours come from a list built with a cutoff a little above re; every sum tests
-/// r_ij < re at the positions passed in.
+/// Neighbours come from a list built with a cutoff a little above re; pairs at r_ij >= re add
+/// exactly zero (the kernel is zero there). The loops have no branch and are marked
+/// `omp simd`: the pairs of one particle are summed several at a time (SSE2/AVX lanes), which
+/// lets the square roots and divisions of several pairs overlap (docs/performance.md). The
+/// lanes reorder the additions of a sum, so results differ from a serial sum in the last bits;
+/// they do not depend on the number of threads.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -36,11 +41,13 @@ class MpsOperators {
 
   /// Eq. 2.4 / 2.17:  <n>_i = sum_{j != i} W(r_ij).
   double number_density(std::int64_t i, IdRange nb, const double* x, const double* y) const {
+    const double xi = x[i], yi = y[i];
+    const std::int32_t* id = nb.first;
     double s = 0.0;
-    for (const std::int32_t j : nb) {
-      const double dx = x[j] - x[i], dy = y[j] - y[i];
-      const double r2 = dx * dx + dy * dy;
-      if (r2 < re2_) s += w_(std::sqrt(r2));
+#pragma omp simd reduction(+ : s)
+    for (std::int64_t k = 0; k < nb.size(); ++k) {
+      const double dx = x[id[k]] - xi, dy = y[id[k]] - yi;
+      s += w_(std::sqrt(dx * dx + dy * dy));
     }
     return s;
   }
@@ -56,13 +63,16 @@ class MpsOperators {
   Vec2 gradient_neighbourhood_min(std::int64_t i, IdRange nb, const double* x, const double* y,
                                   const double* phi) const {
     // Sum of phi_j w_ij and of w_ij, w_ij = W/r^2 (r_j - r_i); then subtract phi_min * sum w_ij.
+    const double xi = x[i], yi = y[i];
+    const std::int32_t* id = nb.first;
     double sx = 0.0, sy = 0.0, tx = 0.0, ty = 0.0, phi_min = phi[i];
-    for (const std::int32_t j : nb) {
-      const double dx = x[j] - x[i], dy = y[j] - y[i];
+#pragma omp simd reduction(+ : sx, sy, tx, ty) reduction(min : phi_min)
+    for (std::int64_t k = 0; k < nb.size(); ++k) {
+      const std::int32_t j = id[k];
+      const double dx = x[j] - xi, dy = y[j] - yi;
       const double r2 = dx * dx + dy * dy;
-      if (r2 >= re2_) continue;
       const double f = w_(std::sqrt(r2)) / r2;
-      if (phi[j] < phi_min) phi_min = phi[j];
+      phi_min = std::min(phi_min, r2 < re2_ ? phi[j] : phi_min);
       sx += phi[j] * f * dx;
       sy += phi[j] * f * dy;
       tx += f * dx;
@@ -94,12 +104,14 @@ class MpsOperators {
   Vec2 gradient_variational(std::int64_t i, IdRange nb, const double* x, const double* y,
                             const double* p_over_n2) const {
     const double ti = p_over_n2[i];
+    const double xi = x[i], yi = y[i];
+    const std::int32_t* id = nb.first;
     double gx = 0.0, gy = 0.0;
-    for (const std::int32_t j : nb) {
-      const double dx = x[i] - x[j], dy = y[i] - y[j];
-      const double r2 = dx * dx + dy * dy;
-      if (r2 >= re2_) continue;
-      const double r = std::sqrt(r2);
+#pragma omp simd reduction(+ : gx, gy)
+    for (std::int64_t k = 0; k < nb.size(); ++k) {
+      const std::int32_t j = id[k];
+      const double dx = xi - x[j], dy = yi - y[j];
+      const double r = std::sqrt(dx * dx + dy * dy);
       const double f = (ti + p_over_n2[j]) * w_.derivative(r) / r;
       gx += f * dx;
       gy += f * dy;

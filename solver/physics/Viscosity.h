@@ -60,19 +60,31 @@ inline Vec2 viscous_acceleration(const MpsOperators& ops,
                                  const ArtificialViscosity_Monaghan1992& art, std::int64_t i,
                                  IdRange nb, const double* x, const double* y, const double* u,
                                  const double* v) {
-  const double re2 = ops.re() * ops.re();
-  const double h2 = 0.25 * re2;
+  const double h2 = 0.25 * ops.re() * ops.re();
   const bool with_art = art.alpha > 0.0;
-  Vec2 lap, q;
-  for (const std::int32_t j : nb) {
-    const Vec2 dr{x[j] - x[i], y[j] - y[i]};
+  const Kernel& kernel = ops.kernel();
+  const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
+  const std::int32_t* id = nb.first;
+  // Pairs at r >= re add zero (W = 0). Components as scalars, so that the loop vectorises (the
+  // note of MpsOperators.h).
+  double lap_x = 0.0, lap_y = 0.0, q_x = 0.0, q_y = 0.0;
+#pragma omp simd reduction(+ : lap_x, lap_y, q_x, q_y)
+  for (std::int64_t k = 0; k < nb.size(); ++k) {
+    const std::int32_t j = id[k];
+    const Vec2 dr{x[j] - xi, y[j] - yi};
     const double r2 = dot(dr, dr);
-    if (r2 >= re2) continue;
-    const double w = ops.kernel()(std::sqrt(r2));
-    const Vec2 du{u[j] - u[i], v[j] - v[i]};
-    lap += Viscosity_Koshizuka1996Laplacian::pair(du, w);
-    if (with_art) q += ArtificialViscosity_Monaghan1992::pair(dr, du, r2, w, h2);
+    const double w = kernel(std::sqrt(r2));
+    const Vec2 du{u[j] - ui, v[j] - vi};
+    const Vec2 l = Viscosity_Koshizuka1996Laplacian::pair(du, w);
+    lap_x += l.x;
+    lap_y += l.y;
+    if (with_art) {
+      const Vec2 q = ArtificialViscosity_Monaghan1992::pair(dr, du, r2, w, h2);
+      q_x += q.x;
+      q_y += q.y;
+    }
   }
+  const Vec2 lap{lap_x, lap_y}, q{q_x, q_y};
   return lap * visc.scale(ops) + q * (with_art ? art.scale(ops) : 0.0);
 }
 

@@ -127,8 +127,13 @@ const double* Simulation::gradient_input() {
   const ParticleState& t = ps.next;
   if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
     const double inv_n0_2 = 1.0 / (ops_.n0() * ops_.n0());
+    // A particle alone (n = 0) is on the free surface, p = 0: its p / n^2 is 0, not 0/0. The
+    // pair loops multiply every input, also of pairs beyond re, by the kernel's zero, so each
+    // must be finite.
     parallel_for(0, ps.size(), [&](std::int64_t i) {
-      p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2 : t.p[i] / (t.n[i] * t.n[i]);
+      p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2
+                      : t.n[i] > 0.0       ? t.p[i] / (t.n[i] * t.n[i])
+                                           : 0.0;
     });
     return p_over_n2_.data();
   } else {
