@@ -11,6 +11,12 @@
 
 namespace wcmps {
 
+/// max(q, 0), exactly, written as arithmetic so that loops using it have no branch and
+/// vectorise (GCC 12 does not vectorise std::max(0.0, q) for SSE2).
+inline double ramp(double q) {
+  return 0.5 * (q + std::fabs(q));
+}
+
 struct WeightCubic_Shakibaeinia2012 {
   double re;
   /// 1/re: the operators evaluate W for every pair of every step, and a multiplication costs a
@@ -19,6 +25,8 @@ struct WeightCubic_Shakibaeinia2012 {
 
   explicit WeightCubic_Shakibaeinia2012(double radius) : re(radius), inv_re(1.0 / radius) {}
 
+  /// The cutoff is a ramp, not a branch: the loops over neighbours evaluate W for several pairs
+  /// at once (SIMD).
   double operator()(double r) const {
     const double q = ramp(1.0 - r * inv_re);
     return q * q * q;
@@ -29,11 +37,6 @@ struct WeightCubic_Shakibaeinia2012 {
     const double q = ramp(1.0 - r * inv_re);
     return -3.0 * q * q * inv_re;
   }
-
-  /// max(q, 0), exactly, written as arithmetic: the cutoff at re then has no branch, and the
-  /// loops over neighbours evaluate W for several pairs at once (SIMD; GCC 12 does not
-  /// vectorise the same with std::max for SSE2).
-  static double ramp(double q) { return 0.5 * (q + std::fabs(q)); }
 };
 
 using Kernel = WeightCubic_Shakibaeinia2012;

@@ -3,9 +3,9 @@
 /// @brief Viscous accelerations of the prediction step (thesis Eq. 2.16). Each scheme gives
 /// its per-pair term; viscous_acceleration() sums both in one pass over the neighbours.
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "core/Vec2.h"
 #include "neighbours/NeighbourList.h"
@@ -23,8 +23,8 @@ struct Viscosity_Koshizuka1996Laplacian {
   double scale(const MpsOperators& ops) const {
     return nu * 2.0 * 2.0 / (ops.lambda() * ops.n0());  // d = 2
   }
-  /// Pair term (u_j - u_i) W, given du = u_j - u_i and w = W(r_ij).
-  static Vec2 pair(Vec2 du, double w) { return du * w; }
+  /// Pair term (u_j - u_i) W of one velocity component, given du = u_j - u_i and w = W(r_ij).
+  static double pair(double du, double w) { return du * w; }
 };
 
 /// Artificial viscosity of Monaghan (1992, Annu. Rev. Astron. Astrophys. 30, 543-574, Eq. 4.1)
@@ -44,14 +44,48 @@ struct ArtificialViscosity_Monaghan1992 {
   double scale(const MpsOperators& ops) const {
     return -alpha * c0 * (0.5 * ops.re()) * 2.0 / ops.n0();  // d = 2
   }
-  /// Pair term, given dr = r_j - r_i, du = u_j - u_i, r^2, w = W(r) and h^2 = (re/2)^2.
-  static Vec2 pair(Vec2 dr, Vec2 du, double r2, double w, double h2) {
+  /// Pair term = factor times dr, given dr = r_j - r_i, du = u_j - u_i, r^2, w = W(r) and
+  /// h^2 = (re/2)^2.
+  static double pair_factor(double dx, double dy, double du, double dv, double r2, double w,
+                            double h2) {
     // u_ij . r_ij = du . dr; receding pairs (>= 0) give nothing. Written without a branch:
     // the sign of a pair is unpredictable and a mispredicted branch costs more than the term.
-    const double closing = std::max(0.0, -dot(du, dr));
-    return dr * (closing * w / ((r2 + 0.01 * h2) * r2));
+    const double closing = ramp(-(du * dx + dv * dy));
+    return closing * w / ((r2 + 0.01 * h2) * r2);
   }
 };
+
+/// Sums over i's neighbours of the Laplacian viscosity's pair terms and, if kArtificial, of the
+/// artificial viscosity's. Pairs at r >= re add zero (W = 0); no branch, so the loop vectorises
+/// (the note of MpsOperators.h).
+template <bool kArtificial>
+std::pair<Vec2, Vec2> viscous_pair_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
+                                        const double* x, const double* y, const double* u,
+                                        const double* v) {
+  // Plain doubles and a copy of the kernel in the loop: with Vec2 and the kernel by reference
+  // GCC 12 leaves this loop scalar.
+  const Kernel w = kernel;
+  const double h2 = 0.25 * w.re * w.re;
+  const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
+  const std::int32_t* id = nb.first;
+  double lap_x = 0.0, lap_y = 0.0, q_x = 0.0, q_y = 0.0;
+#pragma omp simd reduction(+ : lap_x, lap_y, q_x, q_y)
+  for (std::int64_t k = 0; k < nb.size(); ++k) {
+    const std::int32_t j = id[k];
+    const double dx = x[j] - xi, dy = y[j] - yi;
+    const double r2 = dx * dx + dy * dy;
+    const double wij = w(std::sqrt(r2));
+    const double du = u[j] - ui, dv = v[j] - vi;
+    lap_x += Viscosity_Koshizuka1996Laplacian::pair(du, wij);
+    lap_y += Viscosity_Koshizuka1996Laplacian::pair(dv, wij);
+    if constexpr (kArtificial) {
+      const double f = ArtificialViscosity_Monaghan1992::pair_factor(dx, dy, du, dv, r2, wij, h2);
+      q_x += f * dx;
+      q_y += f * dy;
+    }
+  }
+  return {{lap_x, lap_y}, {q_x, q_y}};
+}
 
 /// Viscous acceleration of particle i: the Laplacian viscosity (if nu > 0) and the artificial
 /// viscosity (if alpha > 0), summed in one pass over the neighbours.
@@ -60,32 +94,11 @@ inline Vec2 viscous_acceleration(const MpsOperators& ops,
                                  const ArtificialViscosity_Monaghan1992& art, std::int64_t i,
                                  IdRange nb, const double* x, const double* y, const double* u,
                                  const double* v) {
-  const double h2 = 0.25 * ops.re() * ops.re();
-  const bool with_art = art.alpha > 0.0;
-  const Kernel& kernel = ops.kernel();
-  const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
-  const std::int32_t* id = nb.first;
-  // Pairs at r >= re add zero (W = 0). Components as scalars, so that the loop vectorises (the
-  // note of MpsOperators.h).
-  double lap_x = 0.0, lap_y = 0.0, q_x = 0.0, q_y = 0.0;
-#pragma omp simd reduction(+ : lap_x, lap_y, q_x, q_y)
-  for (std::int64_t k = 0; k < nb.size(); ++k) {
-    const std::int32_t j = id[k];
-    const Vec2 dr{x[j] - xi, y[j] - yi};
-    const double r2 = dot(dr, dr);
-    const double w = kernel(std::sqrt(r2));
-    const Vec2 du{u[j] - ui, v[j] - vi};
-    const Vec2 l = Viscosity_Koshizuka1996Laplacian::pair(du, w);
-    lap_x += l.x;
-    lap_y += l.y;
-    if (with_art) {
-      const Vec2 q = ArtificialViscosity_Monaghan1992::pair(dr, du, r2, w, h2);
-      q_x += q.x;
-      q_y += q.y;
-    }
+  if (art.alpha > 0.0) {
+    const auto [lap, q] = viscous_pair_sums<true>(ops.kernel(), i, nb, x, y, u, v);
+    return lap * visc.scale(ops) + q * art.scale(ops);
   }
-  const Vec2 lap{lap_x, lap_y}, q{q_x, q_y};
-  return lap * visc.scale(ops) + q * (with_art ? art.scale(ops) : 0.0);
+  return viscous_pair_sums<false>(ops.kernel(), i, nb, x, y, u, v).first * visc.scale(ops);
 }
 
 }  // namespace wcmps

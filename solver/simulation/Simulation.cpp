@@ -73,6 +73,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   x_built_.resize(ps.size());
   y_built_.resize(ps.size());
   p_over_n2_.resize(ps.size());
+  near_wall_.resize(ps.size());
   max_speed_ = parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     return std::sqrt(sq(ps.now.u[i]) + sq(ps.now.v[i]));
   });
@@ -106,6 +107,15 @@ void Simulation::compute_initial_pressure() {
     });
   }
   pairs_visited_ = 0;
+}
+
+void Simulation::find_fluid_near_walls() {
+  const ParticleSet& ps = scene_.particles;
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    const IdRange nb = neighbours_.of(i);
+    near_wall_[i] =
+        std::any_of(nb.begin(), nb.end(), [&](std::int32_t j) { return j < ps.fluid_begin(); });
+  });
 }
 
 void Simulation::find_fluid_near_body() {
@@ -307,6 +317,7 @@ void Simulation::load(StateReader& in) {
   grid_.bin(x_built_.data(), y_built_.data(), ps.size());
   neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), ops_.re() + skin_,
                     list_owners_);
+  find_fluid_near_walls();
   if (body_) find_fluid_near_body();
   built_ = true;
   builds_ = 0;
@@ -338,6 +349,7 @@ void Simulation::rebuild_neighbours() {
     y_built_[i] = ps.now.y[i];
   });
   drift_ = 0.0;
+  find_fluid_near_walls();
   if (body_) {
     body_built_s_ = body_->state().s;
     find_fluid_near_body();
@@ -476,6 +488,16 @@ void Simulation::check_stability(double dt) {
   const auto body_rows = body_ ? body_->particles().rows : std::pair<std::size_t, std::size_t>{};
   const Vec2 body_now = body_ ? body_->offset(body_->state().s) : Vec2{};
   const Vec2 body_next = body_ ? body_->offset(body_next_.s) : Vec2{};
+  // The crossing test is needed only near walls. A particle without boundary particles in its
+  // list was more than re + skin from every wall particle at the build; a row's points are
+  // within DL of one of its wall particles (rows are sampled at DL), and the body's particles
+  // have moved by its drift since. The particle's path this step stays within
+  // D = max(|r^n - r_b|, |r^n+1 - r_b|) of its build position r_b, so it cannot reach a row
+  // while D < re + skin - DL - body drift.
+  const double body_moved =
+      body_ ? std::max(body_drift(body_->state().s), body_drift(body_next_.s)) : 0.0;
+  const double clear = ops_.re() + skin_ - rule_.dl - body_moved;
+  const double clear2 = clear > 0.0 ? clear * clear : 0.0;
   auto failure = [&](std::int64_t i) -> std::uint8_t {
     const double x = t.x[i], y = t.y[i];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(t.u[i]) ||
@@ -483,8 +505,10 @@ void Simulation::check_stability(double dt) {
       return kNotFinite;
     }
     if (x < lo.x || y < lo.y || x > hi.x || y > hi.y) return kLeftDomain;
-    const Vec2 a{s.x[i], s.y[i]}, b{x, y};
-    for (std::size_t k = 0; k < rows.size(); ++k) {
+    const Vec2 a{s.x[i], s.y[i]}, b{x, y}, built{x_built_[i], y_built_[i]};
+    const bool may_cross =
+        near_wall_[i] || std::max(dot(a - built, a - built), dot(b - built, b - built)) >= clear2;
+    for (std::size_t k = 0; may_cross && k < rows.size(); ++k) {
       const bool moves = k >= body_rows.first && k < body_rows.second;
       if (moves ? segments_intersect(a - body_now, b - body_next, rows[k].a, rows[k].b)
                 : segments_intersect(a, b, rows[k].a, rows[k].b)) {

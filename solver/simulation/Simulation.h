@@ -98,6 +98,7 @@ class Simulation {
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
+  void find_fluid_near_walls();       // at rebuilds: fluid particles with boundary neighbours
   void find_fluid_near_body();        // at rebuilds: fluid particles with body neighbours
   template <class Scheme>
   const double* gradient_input();  // p, or p/n^2 for the variational gradient
@@ -135,6 +136,7 @@ class Simulation {
   std::vector<std::int32_t> order_;        // scratch for reorder_by_cell
   std::vector<double> x_built_, y_built_;  // positions at the last build of the lists
   std::vector<double> p_over_n2_;          // input of the variational gradient
+  std::vector<std::uint8_t> near_wall_;    // 1: boundary particles in its list (check_stability)
 
   double time_ = 0.0;
   std::int64_t steps_ = 0;

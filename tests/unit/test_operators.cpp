@@ -11,6 +11,8 @@
 #include "operators/Kernel.h"
 #include "operators/LatticeConstants.h"
 #include "operators/MpsOperators.h"
+#include "physics/EquationOfState.h"
+#include "physics/Viscosity.h"
 
 namespace wcmps {
 namespace {
@@ -124,6 +126,53 @@ TEST(LatticeConstants, RowSpacingGivesTheRequestedNumberDensity) {
     // that moves the pressure by 14 Pa at c0 = 37 m/s.
     EXPECT_NEAR(rectangular_lattice_number_density(dl, dy, re), ratio * n0, 1e-10 * n0);
   }
+}
+
+// The pair loops have no branch: a pair beyond re is evaluated and multiplied by the kernel's
+// zero. That zero must be exact, or the huge inputs of far particles would leak in.
+TEST(PairLoops, PairsBeyondReAddExactlyNothing) {
+  const double dl = 0.005, re = 3.5 * dl;
+  const auto c = square_lattice_constants(dl, re);
+  const MpsOperators ops(re, 2, c.n0, c.lambda, c.gradient_correction);
+  Lattice lat(6, dl, re * 1.3);  // lists reach 1.3 re: about 40 % of the pairs lie beyond re
+  const auto nb = lat.list.of(lat.centre);
+  std::vector<double> tame(lat.x.size()), wild(lat.x.size());
+  std::int64_t beyond = 0;
+  for (std::size_t k = 0; k < lat.x.size(); ++k) {
+    tame[k] = 1.0 + 0.1 * lat.x[k] / dl - 0.05 * lat.y[k] / dl;
+    const bool far = std::hypot(lat.x[k], lat.y[k]) >= re;
+    beyond += far;
+    wild[k] = far ? 1e300 : tame[k];
+  }
+  ASSERT_GT(beyond, 0);
+  const double* x = lat.x.data();
+  const double* y = lat.y.data();
+  const std::int64_t i = lat.centre;
+  // Bit for bit: the far pairs' terms are 0 * finite, whatever the input.
+  EXPECT_EQ(ops.gradient_variational(i, nb, x, y, wild.data()).x,
+            ops.gradient_variational(i, nb, x, y, tame.data()).x);
+  EXPECT_EQ(ops.gradient_neighbourhood_min(i, nb, x, y, wild.data()).y,
+            ops.gradient_neighbourhood_min(i, nb, x, y, tame.data()).y);
+  const Viscosity_Koshizuka1996Laplacian visc{1e-6};
+  const ArtificialViscosity_Monaghan1992 art{0.02, 26.0};
+  EXPECT_EQ(viscous_acceleration(ops, visc, art, i, nb, x, y, wild.data(), tame.data()).x,
+            viscous_acceleration(ops, visc, art, i, nb, x, y, tame.data(), tame.data()).x);
+  EXPECT_DOUBLE_EQ(ops.number_density(i, nb, x, y), c.n0);
+}
+
+TEST(EquationOfState, WholeExponentsBySquaringMatchPow) {
+  for (int e = 1; e <= 16; ++e) {
+    for (const double x : {0.9, 1.0, 1.0137, 1.2}) {
+      const double exact = std::pow(x, e);
+      // Squaring rounds once per multiplication (at most 8 for e <= 16): 8 half-ulps, under
+      // 1e-15 relative; 4e-15 leaves room and would still catch a wrong power (>= 1 %).
+      EXPECT_NEAR(EquationOfState_TaitShakibaeiniaJin2010::power(x, e), exact, 4e-15 * exact)
+          << x << "^" << e;
+    }
+  }
+  // Other exponents go to std::pow.
+  EXPECT_EQ(EquationOfState_TaitShakibaeiniaJin2010::power(1.01, 7.5), std::pow(1.01, 7.5));
+  EXPECT_EQ(EquationOfState_TaitShakibaeiniaJin2010::power(1.01, 17.0), std::pow(1.01, 17.0));
 }
 
 }  // namespace
