@@ -5,11 +5,12 @@
 /// formula and nothing else: loops over particles and scheme choices live in the physics phases.
 ///
 /// Neighbours come from a list built with a cutoff a little above re; pairs at r_ij >= re add
-/// exactly zero (the kernel is zero there). The loops have no branch and are marked
-/// `omp simd`: the pairs of one particle are summed several at a time (SSE2/AVX lanes), which
-/// lets the square roots and divisions of several pairs overlap (docs/performance.md). The
-/// lanes reorder the additions of a sum, so results differ from a serial sum in the last bits;
-/// they do not depend on the number of threads.
+/// exactly zero (the kernel is zero there). The loops of every step (number density, the
+/// neighbourhood-min and variational gradients; the viscosity in physics/Viscosity.h) have no
+/// branch and are marked `omp simd`: the pairs of one particle are summed several at a time
+/// (SSE2/AVX lanes), which lets the square roots and divisions of several pairs overlap
+/// (docs/performance.md). The lanes reorder the additions of a sum, so results differ from a
+/// serial sum in the last bits; they do not depend on the number of threads.
 
 #include <algorithm>
 #include <cmath>
