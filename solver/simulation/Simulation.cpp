@@ -116,17 +116,14 @@ void Simulation::find_fluid_near_walls() {
     near_wall_[i] =
         std::any_of(nb.begin(), nb.end(), [&](std::int32_t j) { return j < ps.fluid_begin(); });
   });
-}
-
-void Simulation::find_fluid_near_body() {
-  const ParticleSet& ps = scene_.particles;
+  // The body's particles are boundary particles: only those near a wall can be near the body.
   near_body_.clear();
+  if (!body_) return;
   for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
-    for (const std::int32_t j : neighbours_.of(i)) {
-      if (in_body(j)) {
-        near_body_.push_back(static_cast<std::int32_t>(i));
-        break;
-      }
+    const IdRange nb = neighbours_.of(i);
+    if (near_wall_[i] &&
+        std::any_of(nb.begin(), nb.end(), [&](std::int32_t j) { return in_body(j); })) {
+      near_body_.push_back(static_cast<std::int32_t>(i));
     }
   }
 }
@@ -318,7 +315,6 @@ void Simulation::load(StateReader& in) {
   neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), ops_.re() + skin_,
                     list_owners_);
   find_fluid_near_walls();
-  if (body_) find_fluid_near_body();
   built_ = true;
   builds_ = 0;
   pairs_visited_ = 0;
@@ -349,11 +345,8 @@ void Simulation::rebuild_neighbours() {
     y_built_[i] = ps.now.y[i];
   });
   drift_ = 0.0;
+  if (body_) body_built_s_ = body_->state().s;
   find_fluid_near_walls();
-  if (body_) {
-    body_built_s_ = body_->state().s;
-    find_fluid_near_body();
-  }
   built_ = true;
   ++builds_;
 }

@@ -98,8 +98,7 @@ class Simulation {
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
-  void find_fluid_near_walls();       // at rebuilds: fluid particles with boundary neighbours
-  void find_fluid_near_body();        // at rebuilds: fluid particles with body neighbours
+  void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
   template <class Scheme>
   const double* gradient_input();  // p, or p/n^2 for the variational gradient
   template <class Scheme>
