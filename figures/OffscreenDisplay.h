@@ -33,6 +33,7 @@ class OffscreenDisplay {
  private:
   std::string description_;
   pid_t xvfb_ = -1;
+  void* held_ = nullptr;  ///< Display*: our connection to $DISPLAY, open while we render
 };
 
 }  // namespace wcmps

@@ -90,23 +90,38 @@ def load_plugin(explicit=None):
     return path, types.SimpleNamespace(**namespace)
 
 
+_held_display = None
+
+
 def require_display():
     """ParaView 5.11 as Debian builds it renders through X only, and a render window with no
-    X server kills the process (docs/paraview.md): check before anything renders."""
+    X server kills the process (docs/paraview.md): check before anything renders.
+
+    The connection is kept open until the process ends. An X server started without -noreset
+    (as xvfb-run starts it) resets whenever its last client leaves, and a connection attempted
+    during a reset fails; VTK's render window makes one attempt and aborts the process if it
+    fails. While this connection is open the server cannot reset. The check itself tries 20
+    times 0.05 s apart to ride out a reset caused by another client (docs/figures.md, "X server
+    resets")."""
     import ctypes
     import ctypes.util
+    import time
 
+    global _held_display
+    if _held_display is not None:
+        return
     name = os.environ.get("DISPLAY")
     lib = ctypes.util.find_library("X11")
     if name and lib:
         x11 = ctypes.CDLL(lib)
         x11.XOpenDisplay.restype = ctypes.c_void_p
         x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
-        x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
-        display = x11.XOpenDisplay(name.encode())
-        if display:
-            x11.XCloseDisplay(display)
-            return
+        for _ in range(20):
+            display = x11.XOpenDisplay(name.encode())
+            if display:
+                _held_display = display
+                return
+            time.sleep(0.05)
     raise ScriptError(
         f"no X display to render with (DISPLAY={name or 'unset'}); run under "
         "`xvfb-run -a pvpython ...` (Debian package xvfb)", EXIT_DISPLAY)
