@@ -1,6 +1,7 @@
 #include "vtkMPSKernel.h"
 
 #include <cmath>
+#include <vector>
 
 #include "operators/Kernel.h"
 #include "vtkDataSet.h"
@@ -31,22 +32,30 @@ vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleAr
                                        vtkDoubleArray* weights, double* weightSum) {
   const vtkIdType n = pIds->GetNumberOfIds();
   weights->SetNumberOfTuples(n);
-  double* phi = weights->GetPointer(0);
-  const double* p = prob ? prob->GetPointer(0) : nullptr;
+  std::vector<double> dx(n), dy(n);
+  double xj[3];
+  for (vtkIdType k = 0; k < n; ++k) {
+    this->DataSet->GetPoint(pIds->GetId(k), xj);
+    dx[k] = xj[0] - x[0];
+    dy[k] = xj[1] - x[1];
+  }
+  return this->ComputeWeights(n, dx.data(), dy.data(), prob ? prob->GetPointer(0) : nullptr,
+                              weights->GetPointer(0), weightSum);
+}
+
+vtkIdType vtkMPSKernel::ComputeWeights(vtkIdType n, const double* dx, const double* dy,
+                                       const double* p, double* phi, double* weightSum) const {
   const wcmps::Kernel w{this->Radius};
 
   // First pass: the weights and their zeroth and first moments.
   double s = 0.0, raw = 0.0, mx = 0.0, my = 0.0;
-  double xj[3];
   for (vtkIdType k = 0; k < n; ++k) {
-    this->DataSet->GetPoint(pIds->GetId(k), xj);
-    const double dx = xj[0] - x[0], dy = xj[1] - x[1];
-    const double wk = w(std::sqrt(dx * dx + dy * dy));
+    const double wk = w(std::sqrt(dx[k] * dx[k] + dy[k] * dy[k]));
     raw += wk;
     phi[k] = p ? wk * p[k] : wk;
     s += phi[k];
-    mx += phi[k] * dx;
-    my += phi[k] * dy;
+    mx += phi[k] * dx[k];
+    my += phi[k] * dy[k];
   }
   *weightSum = raw;
   if (s <= 0.0) {
@@ -58,8 +67,7 @@ vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleAr
   const double bx = mx / s, by = my / s;
   if (linear) {
     for (vtkIdType k = 0; k < n; ++k) {
-      this->DataSet->GetPoint(pIds->GetId(k), xj);
-      const double ex = xj[0] - x[0] - bx, ey = xj[1] - x[1] - by;
+      const double ex = dx[k] - bx, ey = dy[k] - by;
       cxx += phi[k] * ex * ex;
       cxy += phi[k] * ex * ey;
       cyy += phi[k] * ey * ey;
@@ -80,8 +88,7 @@ vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleAr
     const double gx = (cyy * bx - cxy * by) / det;
     const double gy = (cxx * by - cxy * bx) / det;
     for (vtkIdType k = 0; k < n; ++k) {
-      this->DataSet->GetPoint(pIds->GetId(k), xj);
-      const double ex = xj[0] - x[0] - bx, ey = xj[1] - x[1] - by;
+      const double ex = dx[k] - bx, ey = dy[k] - by;
       phi[k] = phi[k] / s * (1.0 - gx * ex - gy * ey);
     }
   } else if (this->NormalizeWeights) {

@@ -83,6 +83,14 @@ class WCMPSFILTERS_EXPORT vtkMPSKernel : public vtkGeneralizedKernel {
                            vtkDoubleArray* weights, double* weightSum);
 
   /**
+   * Same, from the offsets d_j = x_j - x of n points (dx, dy) instead of their ids: the
+   * weights go to phi (n values). The one implementation; the overloads above gather the
+   * offsets and call it. Thread-safe (reads only the settings).
+   */
+  vtkIdType ComputeWeights(vtkIdType n, const double* dx, const double* dy, const double* prob,
+                           double* phi, double* weightSum) const;
+
+  /**
    * W(r) for kernel radius re.
    */
   static double Weight(double r, double re);
