@@ -1,10 +1,14 @@
 // Work against precision: the error of a validation case against the wall time of its run, over
-// particle sizes, time-step rules (the study's fixed 2.5e-5 s and the adaptive Courant step) and
+// particle sizes, time-step rules (the study's fixed 2.5e-5 s, the adaptive Courant step with the
+// case's Courant number or courant:C with another) and
 // the pressure-gradient schemes the solver offers (docs/performance.md).
 //
 //   build/bin/bench_work_precision --study dambreak [--dl 0.01,0.007,0.005,0.0035]
-//       [--steps courant,fixed] [--gradients all] [--repeats 3] [--threads 2] [--out FILE.csv]
+//       [--steps courant,fixed,courant:0.8] [--gradients all] [--repeats 3] [--threads 2]
+//       [--out FILE.csv]
 //   build/bin/bench_work_precision --study hydrostatic ...
+//   build/bin/bench_work_precision --study caseI [--dl 0.01,0.007,0.005] [--reference-dl 0.0025]
+//       [--reference FILE.csv] [--section A] [--time 0.4] [--samples PREFIX] ...
 //   bench/plot_work_precision.py FILE.csv ...   (log-log plot, PNG)
 //
 // - dambreak (cases/dambreak): rms error of the surge-front position Z = z/a against Martin &
@@ -12,6 +16,19 @@
 //   computes it (a fixed time shift of 0.15 in T, docs/validation.md).
 // - hydrostatic (cases/hydrostatic, 0.7 m of still water): rms of p - rho g (H - y) over the
 //   fluid particles below H - re, over t in [0.75, 1] s, as a fraction of rho g H.
+// - caseI (cases/caseI, the study's sliding block): no measurement to compare with, so a finer
+//   run is the reference (--reference-dl; its samples are kept in --reference FILE and reused
+//   while its settings match). Two errors at --time (0.4 s), a CSV row each:
+//   rms_eta: the wave eta(x) - eta(x, t = 0) at x = 0.05, 0.06 ... 2.00 m (the top of the water
+//     by the wave gauges' algorithm, operators/WaterSpan.h, against the run's own still-water
+//     level after settling, as a gauge zeroed at still water reads), rms of its difference from
+//     the reference's where both have water, over the reference's largest |eta - eta0|;
+//   rms_u_<section>: the velocity on the section (51 points from the start of the water, Y = 0,
+//     on the bed or the block, to the surface, Y = 1, as `wcmps post` samples it: the longest
+//     stretch with coverage 0.5, the MPS weight's Shepard average), rms of |u - u_ref| at equal
+//     Y, over max |u_ref|.
+//   Its wall time includes the 0.5 s of settling (the block held) that every case I run does.
+//   --samples PREFIX writes each run's samples to PREFIX_<dl>_<rule>.csv, as the reference's.
 //
 // Wall time: the stepping alone (scene building and the error's sampling excluded), the median
 // of --repeats runs; the runs are deterministic, so the error is that of every repeat (the
@@ -32,9 +49,14 @@
 #include "core/Error.h"
 #include "core/Parallel.h"
 #include "core/SchemeTable.h"
+#include "io/AtomicFile.h"
+#include "neighbours/CellGrid.h"
+#include "operators/Kernel.h"
+#include "operators/WaterSpan.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
+#include "simulation/WaveGauges.h"
 #include "support/DamBreakFront.h"
 
 namespace {
@@ -57,6 +79,18 @@ Result run(const CaseSpec& spec, const std::vector<double>& times, Sample&& samp
   Result r;
   r.particles = sim.particles().size();
   using clock = std::chrono::steady_clock;
+  if (sim.settling()) {
+    const auto t0 = clock::now();
+    try {
+      sim.settle();
+    } catch (const InstabilityError& e) {
+      r.unstable = e.report().str();
+      r.steps = sim.settle_steps();
+      r.seconds = std::chrono::duration<double>(clock::now() - t0).count();
+      return r;
+    }
+    r.seconds += std::chrono::duration<double>(clock::now() - t0).count();
+  }
   for (const double t : times) {
     const auto t0 = clock::now();
     try {
@@ -68,7 +102,7 @@ Result run(const CaseSpec& spec, const std::vector<double>& times, Sample&& samp
     if (!r.unstable.empty()) break;
     sample(sim);
   }
-  r.steps = sim.steps();
+  r.steps = sim.settle_steps() + sim.steps();
   return r;
 }
 
@@ -127,11 +161,186 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
+/// The fluid particles of a state, binned, for kernel sums at arbitrary points: the coverage
+/// (operators/WaterSpan.h) and the Shepard average of the velocity with the MPS weight.
+class FluidProbe {
+ public:
+  FluidProbe(const Simulation& sim, const CaseSpec& spec)
+      : ps_(sim.particles()), w_{spec.re()}, scale_(coverage_scale(spec.dl, spec.re())) {
+    grid_.configure(sim.scene().domain_lo, sim.scene().domain_hi, spec.re());
+    grid_.bin(ps_.now.x.data() + ps_.fluid_begin(), ps_.now.y.data() + ps_.fluid_begin(),
+              ps_.fluid_count());
+  }
+  /// Sum of W, and of W u and W v, over the fluid within re of (x, y).
+  void sums(double x, double y, double& w, double& wu, double& wv) const {
+    w = wu = wv = 0.0;
+    const std::int64_t f = ps_.fluid_begin();
+    const int cx = grid_.cell_x(x), cy = grid_.cell_y(y);
+    for (int j = std::max(cy - 1, 0); j <= std::min(cy + 1, grid_.ny() - 1); ++j) {
+      for (int i = std::max(cx - 1, 0); i <= std::min(cx + 1, grid_.nx() - 1); ++i) {
+        for (const std::int32_t* k = grid_.cell_begin(i, j); k != grid_.cell_end(i, j); ++k) {
+          const std::int64_t n = f + *k;
+          const double wk = w_(std::hypot(ps_.now.x[n] - x, ps_.now.y[n] - y));
+          w += wk;
+          wu += wk * ps_.now.u[n];
+          wv += wk * ps_.now.v[n];
+        }
+      }
+    }
+  }
+  double coverage(double x, double y) const {
+    double w, wu, wv;
+    sums(x, y, w, wu, wv);
+    return w * scale_;
+  }
+
+ private:
+  const ParticleSet& ps_;
+  Kernel w_;
+  double scale_;
+  CellGrid grid_;
+};
+
+/// What the case I study compares: the surface at the stations, (u, v) at the section's Y.
+struct CaseISamples {
+  std::vector<double> eta;   // at the sample time; NaN where the vertical meets no water
+  std::vector<double> eta0;  // at t = 0 (after settling): the still-water level of this run
+  std::vector<double> u, v;  // at Y = k / (kSectionSamples - 1)
+  double depth = 0.0;        // H, the section's water column
+  static constexpr int kSectionSamples = 51;  // as [post] section_samples of cases/caseI
+  static std::vector<double> stations() {
+    std::vector<double> x;
+    for (int k = 5; k <= 200; ++k) x.push_back(0.01 * k);
+    return x;
+  }
+};
+
+/// The top of the water above each station (the wave gauges' algorithm).
+std::vector<double> surface(const Simulation& sim, const CaseSpec& spec) {
+  CaseSpec gauge_spec = spec;
+  gauge_spec.gauges.x = CaseISamples::stations();
+  gauge_spec.gauges.interval = 0.0;
+  WaveGauges gauges(gauge_spec, sim.scene().domain_lo, sim.scene().domain_hi);
+  gauges.sample(sim);
+  const double* row = gauges.sample_values(0);
+  return {row + 1, row + 1 + gauge_spec.gauges.x.size()};
+}
+
+void sample_section(const Simulation& sim, const CaseSpec& spec, const SectionSpec& section,
+                    CaseISamples& out) {
+  const FluidProbe probe(sim, spec);
+  const Vec2 o = section.origin, d = section.direction;
+  const auto wet = [&](double s) {
+    return probe.coverage(o.x + s * d.x, o.y + s * d.y) >= kWaterEdgeCoverage;
+  };
+  // The whole line through the tank (2 m either way): the water column is the longest wet
+  // stretch, from the bed (or the block) to the surface, as the filters' sections take it.
+  const WaterSpan span = longest_water_span(wet, -2.0, 2.0, 0.25 * spec.dl, 1e-3 * spec.dl);
+  if (!span.found) throw std::runtime_error("section " + section.name + " meets no water");
+  out.depth = span.s1 - span.s0;
+  out.u.clear();
+  out.v.clear();
+  for (int k = 0; k < CaseISamples::kSectionSamples; ++k) {
+    const double s = span.s0 + (span.s1 - span.s0) * k / (CaseISamples::kSectionSamples - 1.0);
+    double w, wu, wv;
+    probe.sums(o.x + s * d.x, o.y + s * d.y, w, wu, wv);
+    out.u.push_back(w > 0.0 ? wu / w : 0.0);
+    out.v.push_back(w > 0.0 ? wv / w : 0.0);
+  }
+}
+
+Result case_i(CaseSpec spec, double time, const SectionSpec& section, CaseISamples* samples) {
+  spec.end_time = time;
+  return run(spec, {0.0, time}, [&](const Simulation& sim) {
+    if (sim.time() < 0.5 * time) {
+      samples->eta0 = surface(sim, spec);
+    } else {
+      samples->eta = surface(sim, spec);
+      sample_section(sim, spec, section, *samples);
+    }
+  });
+}
+
+/// The reference file: a first line naming its settings, then "eta,x,eta,eta0", "u,Y,u,v" and
+/// "H,section,depth" rows.
+std::string reference_key(const CaseSpec& spec, double time, const std::string& section) {
+  char key[256];
+  std::snprintf(key, sizeof key, "# caseI reference dl=%g time=%g section=%s settle=%g step=%s %g",
+                spec.dl, time, section.c_str(), spec.settle_time,
+                spec.step_mode == TimeStepMode::Fixed ? "fixed" : "courant",
+                spec.step_mode == TimeStepMode::Fixed ? spec.fixed_step : spec.courant);
+  return key;
+}
+
+bool read_reference(const std::string& path, const std::string& key, CaseISamples& ref) {
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line) || line != key) return false;
+  while (std::getline(in, line)) {
+    const auto f = split(line);
+    if (f.size() == 4 && f[0] == "eta") {
+      ref.eta.push_back(std::stod(f[2]));
+      ref.eta0.push_back(std::stod(f[3]));
+    }
+    if (f.size() == 4 && f[0] == "u") {
+      ref.u.push_back(std::stod(f[2]));
+      ref.v.push_back(std::stod(f[3]));
+    }
+    if (f.size() == 3 && f[0] == "H") ref.depth = std::stod(f[2]);
+  }
+  return ref.eta.size() == CaseISamples::stations().size() &&
+         ref.u.size() == CaseISamples::kSectionSamples && ref.depth > 0.0;
+}
+
+void write_reference(const std::string& path, const std::string& key, const CaseISamples& ref,
+                     const std::string& section) {
+  std::ostringstream f;
+  f.precision(12);
+  f << key << '\n';
+  const auto x = CaseISamples::stations();
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    f << "eta," << x[k] << ',' << ref.eta[k] << ',' << ref.eta0[k] << '\n';
+  }
+  for (std::size_t k = 0; k < ref.u.size(); ++k) {
+    f << "u," << k / (CaseISamples::kSectionSamples - 1.0) << ',' << ref.u[k] << ',' << ref.v[k]
+      << '\n';
+  }
+  f << "H," << section << ',' << ref.depth << '\n';
+  write_file_atomically(path, f.str());
+}
+
+/// The wave: eta - eta0, the surface against this run's still-water level. rms of its
+/// difference from the reference's over the stations wet in both, over max |reference|.
+double surface_error(const CaseISamples& a, const CaseISamples& ref) {
+  double e2 = 0.0, peak = 0.0;
+  int n = 0;
+  for (std::size_t k = 0; k < ref.eta.size(); ++k) {
+    const double wa = a.eta[k] - a.eta0[k], wr = ref.eta[k] - ref.eta0[k];
+    if (std::isnan(wa) || std::isnan(wr)) continue;
+    e2 += (wa - wr) * (wa - wr);
+    peak = std::max(peak, std::abs(wr));
+    ++n;
+  }
+  return n > 0 && peak > 0.0 ? std::sqrt(e2 / n) / peak : NAN;
+}
+
+/// rms of |u - u_ref| over the section's samples, over max |u_ref|.
+double section_error(const CaseISamples& a, const CaseISamples& ref) {
+  double e2 = 0.0, peak = 0.0;
+  for (std::size_t k = 0; k < ref.u.size(); ++k) {
+    e2 += std::pow(a.u[k] - ref.u[k], 2) + std::pow(a.v[k] - ref.v[k], 2);
+    peak = std::max(peak, std::hypot(ref.u[k], ref.v[k]));
+  }
+  return peak > 0.0 ? std::sqrt(e2 / ref.u.size()) / peak : NAN;
+}
+
 int usage(const char* msg) {
   std::fprintf(stderr,
-               "bench_work_precision: %s\nusage: bench_work_precision --study dambreak|hydrostatic "
-               "[--dl D1,D2,...] [--steps courant,fixed] [--gradients all|NAME,...] "
-               "[--repeats N] [--threads N] [--out FILE.csv]\n",
+               "bench_work_precision: %s\nusage: bench_work_precision --study "
+               "dambreak|hydrostatic|caseI [--dl D1,D2,...] [--steps courant,fixed,courant:C] "
+               "[--gradients all|NAME,...] [--repeats N] [--threads N] [--out FILE.csv]\n"
+               "  caseI only: [--reference-dl D] [--reference FILE.csv] [--section NAME] "
+               "[--time T] [--settle S] [--samples PREFIX]\n",
                msg);
   return 2;
 }
@@ -139,7 +348,9 @@ int usage(const char* msg) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string study, dls, steps = "courant,fixed", gradients = "all", out;
+  std::string study, dls, steps = "courant,fixed", gradients, out;
+  std::string reference_path = "caseI_reference.csv", section_name = "A", samples_prefix;
+  double reference_dl = 0.0025, sample_time = 0.4, settle = -1.0;
   int repeats = 3, threads = 2;
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
@@ -162,6 +373,18 @@ int main(int argc, char** argv) {
         threads = std::stoi(value());
       } else if (a == "--out") {
         out = value();
+      } else if (a == "--reference-dl") {
+        reference_dl = std::stod(value());
+      } else if (a == "--reference") {
+        reference_path = value();
+      } else if (a == "--section") {
+        section_name = value();
+      } else if (a == "--time") {
+        sample_time = std::stod(value());
+      } else if (a == "--settle") {
+        settle = std::stod(value());
+      } else if (a == "--samples") {
+        samples_prefix = value();
       } else {
         return usage(("unknown argument " + a).c_str());
       }
@@ -169,17 +392,29 @@ int main(int argc, char** argv) {
       return usage(e.what());
     }
   }
-  if (study != "dambreak" && study != "hydrostatic") return usage("--study is required");
+  if (study != "dambreak" && study != "hydrostatic" && study != "caseI") {
+    return usage("--study is required");
+  }
+  const bool case_i_study = study == "caseI";
   if (repeats < 1 || threads < 1) return usage("--repeats and --threads must be >= 1");
-  if (dls.empty()) dls = study == "dambreak" ? "0.01,0.007,0.005,0.0035" : "0.02,0.014,0.01,0.007";
-  std::vector<PressureGradientScheme> schemes;
-  for (const auto& row : kPressureGradientSchemes) {
-    const auto wanted = split(gradients);
-    if (gradients == "all" || std::find(wanted.begin(), wanted.end(), row.key) != wanted.end()) {
-      schemes.push_back(row.scheme);
+  if (!(reference_dl > 0.0) || !(sample_time > 0.0)) {
+    return usage("--reference-dl and --time must be > 0");
+  }
+  if (dls.empty()) {
+    dls = study == "dambreak"      ? "0.01,0.007,0.005,0.0035"
+          : study == "hydrostatic" ? "0.02,0.014,0.01,0.007"
+                                   : "0.01,0.007,0.005";
+  }
+  for (const auto& rule : split(steps)) {
+    if (rule == "fixed" || rule == "courant") continue;
+    char* end = nullptr;
+    const double c = rule.rfind("courant:", 0) == 0 ? std::strtod(rule.c_str() + 8, &end) : 0.0;
+    if (!end || *end || !(c > 0.0)) {
+      return usage(("unknown step rule " + rule + " (fixed, courant or courant:C, C > 0)").c_str());
     }
   }
-  if (schemes.empty()) return usage("--gradients names no scheme");
+  // Case I is costly: by default only the gradient its case file names.
+  if (gradients.empty()) gradients = case_i_study ? "case" : "all";
 
   set_thread_count(threads);
   const std::string source = WCMPS_SOURCE_DIR;
@@ -188,28 +423,73 @@ int main(int argc, char** argv) {
          "wall_seconds_min,wall_seconds_max,error,error_measure,threads\n";
   try {
     const CaseSpec base = parse_case_file(source + "/cases/" + study + "/case.toml");
+    std::vector<PressureGradientScheme> schemes;
+    for (const auto& row : kPressureGradientSchemes) {
+      const auto wanted = split(gradients);
+      if (gradients == "all" || std::find(wanted.begin(), wanted.end(), row.key) != wanted.end() ||
+          (gradients == "case" && row.scheme == base.pressure_gradient)) {
+        schemes.push_back(row.scheme);
+      }
+    }
+    if (schemes.empty()) return usage("--gradients names no scheme");
     const auto data = study == "dambreak"
                           ? martin_moyce(source + "/cases/dambreak/martin_moyce_1952.csv")
                           : std::vector<Point>{};
+
+    // Case I: the section, and the finer run every other is compared with.
+    SectionSpec section;
+    CaseISamples reference;
+    if (case_i_study) {
+      const auto it = std::find_if(base.sections.begin(), base.sections.end(),
+                                   [&](const SectionSpec& s) { return s.name == section_name; });
+      if (it == base.sections.end()) return usage(("no section " + section_name).c_str());
+      section = *it;
+      CaseSpec ref = base;
+      ref.dl = reference_dl;
+      if (settle >= 0.0) ref.settle_time = settle;
+      const std::string key = reference_key(ref, sample_time, section_name);
+      if (read_reference(reference_path, key, reference)) {
+        std::fprintf(stderr, "reference: %s (%s)\n", reference_path.c_str(), key.c_str() + 2);
+      } else {
+        std::fprintf(stderr, "reference: running DL %g m (%s)\n", ref.dl, key.c_str() + 2);
+        const Result r = case_i(ref, sample_time, section, &reference);
+        if (!r.unstable.empty()) {
+          std::fprintf(stderr, "bench_work_precision: the reference run became unstable: %s\n",
+                       r.unstable.c_str());
+          return 1;
+        }
+        std::fprintf(stderr, "reference: %lld particles, %lld steps, %.4g s\n",
+                     static_cast<long long>(r.particles), static_cast<long long>(r.steps),
+                     r.seconds);
+        write_reference(reference_path, key, reference, section_name);
+      }
+    }
+
     for (const auto& d : split(dls)) {
       for (const auto& rule : split(steps)) {
         for (const auto scheme : schemes) {
           CaseSpec spec = base;
           spec.dl = std::stod(d);
-          spec.settle_time = 0.0;
+          if (!case_i_study) spec.settle_time = 0.0;
+          if (case_i_study && settle >= 0.0) spec.settle_time = settle;
           if (rule == "fixed") {
             spec.step_mode = TimeStepMode::Fixed;
             spec.fixed_step = 2.5e-5;  // the study's
           } else if (rule == "courant") {
             spec.step_mode = TimeStepMode::Courant;
-          } else {
-            return usage(("unknown step rule " + rule).c_str());
+          } else {  // courant:C, checked above
+            spec.step_mode = TimeStepMode::Courant;
+            spec.courant = std::stod(rule.substr(8));
           }
           spec.pressure_gradient = scheme;
           std::vector<double> seconds;
           Result first;
+          CaseISamples samples;
           for (int k = 0; k < repeats; ++k) {
-            const Result r = study == "dambreak" ? dam_break(spec, data) : still_water(spec);
+            const Result r = study == "dambreak" ? dam_break(spec, data)
+                             : study == "hydrostatic"
+                                 ? still_water(spec)
+                                 : case_i(spec, sample_time, section, &samples);
             if (k == 0) first = r;
             if (k > 0 && r.steps != first.steps) {
               std::fprintf(stderr, "bench_work_precision: repeat %d took another path\n", k);
@@ -222,32 +502,44 @@ int main(int argc, char** argv) {
             }
           }
           std::sort(seconds.begin(), seconds.end());
+          std::vector<std::pair<double, std::string>> errors;
+          if (!case_i_study) {
+            errors.emplace_back(first.error,
+                                study == "dambreak" ? "rms_front_Z" : "rms_p_over_rho_g_H");
+          } else {
+            const bool ok = first.unstable.empty();
+            errors.emplace_back(ok ? surface_error(samples, reference) : NAN, "rms_eta");
+            errors.emplace_back(ok ? section_error(samples, reference) : NAN,
+                                "rms_u_" + section_name);
+            if (ok && !samples_prefix.empty()) {  // each run's samples, as the reference's
+              write_reference(samples_prefix + "_" + d + "_" + rule + ".csv",
+                              reference_key(spec, sample_time, section_name), samples,
+                              section_name);
+            }
+          }
           const std::string name(scheme_key(kPressureGradientSchemes, scheme));
-          char line[512];
-          std::snprintf(line, sizeof line, "%s,%g,%lld,%s,%s,%lld,%zu,%.4g,%.4g,%.4g,%.6g,%s,%d\n",
-                        study.c_str(), spec.dl, static_cast<long long>(first.particles),
-                        rule.c_str(), name.c_str(), static_cast<long long>(first.steps),
-                        seconds.size(), seconds[seconds.size() / 2], seconds.front(),
-                        seconds.back(), first.error,
-                        study == "dambreak" ? "rms_front_Z" : "rms_p_over_rho_g_H", threads);
-          csv << line;
-          std::fputs(line, stderr);
+          for (const auto& [error, measure] : errors) {
+            char line[512];
+            std::snprintf(line, sizeof line,
+                          "%s,%g,%lld,%s,%s,%lld,%zu,%.4g,%.4g,%.4g,%.6g,%s,%d\n", study.c_str(),
+                          spec.dl, static_cast<long long>(first.particles), rule.c_str(),
+                          name.c_str(), static_cast<long long>(first.steps), seconds.size(),
+                          seconds[seconds.size() / 2], seconds.front(), seconds.back(), error,
+                          measure.c_str(), threads);
+            csv << line;
+            std::fputs(line, stderr);
+          }
         }
       }
+    }
+    if (out.empty()) {
+      std::cout << csv.str();
+    } else {
+      write_file_atomically(out, csv.str());
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_work_precision: %s\n", e.what());
     return 1;
-  }
-  if (out.empty()) {
-    std::cout << csv.str();
-  } else {
-    std::ofstream f(out);
-    f << csv.str();
-    if (!f) {
-      std::fprintf(stderr, "bench_work_precision: cannot write %s\n", out.c_str());
-      return 1;
-    }
   }
   return 0;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Work-precision plot of bench_work_precision's CSV: error against wall time, log-log, a line
-per (time-step rule, pressure gradient) through its particle sizes; and the settings on the
-best front (no other run both faster and more accurate).
+per (time-step rule, pressure gradient) through its particle sizes, a panel per error measure;
+and the settings on the best front of each (no other run both faster and more accurate).
 
 usage: plot_work_precision.py RESULTS.csv OUT.png [TITLE]
 """
@@ -27,30 +27,36 @@ def main():
         r["t"] = float(r["wall_seconds_median"])
         r["e"] = float(r["error"])
         r["dl"] = float(r["dl_m"])
-    fig, ax = plt.subplots(figsize=(7, 5), dpi=110)
-    series = sorted({(r["step_rule"], r["gradient"]) for r in rows})
-    for rule, grad in series:
-        pts = sorted((r for r in rows if (r["step_rule"], r["gradient"]) == (rule, grad)),
-                     key=lambda r: r["t"])
-        ax.loglog([p["t"] for p in pts], [p["e"] for p in pts],
-                  "o-" if rule == "courant" else "s--", label=f"{grad}, {rule} step")
-        for p in pts:
-            ax.annotate(f"{p['dl'] * 1000:g}", (p["t"], p["e"]), fontsize=7,
-                        textcoords="offset points", xytext=(3, 3))
-    ax.set_xlabel("wall time of the run (s, median; labels: DL in mm)")
-    ax.set_ylabel(rows[0]["error_measure"])
-    ax.set_title(sys.argv[3] if len(sys.argv) > 3 else rows[0]["study"])
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    # A panel per error measure (case I has two: the surface and a section's velocity).
+    measures = list(dict.fromkeys(r["error_measure"] for r in rows))
+    fig, axes = plt.subplots(1, len(measures), figsize=(7 * len(measures), 5), dpi=110,
+                             squeeze=False)
+    front = []
+    for ax, measure in zip(axes[0], measures):
+        mine = [r for r in rows if r["error_measure"] == measure]
+        series = sorted({(r["step_rule"], r["gradient"]) for r in mine})
+        for rule, grad in series:
+            pts = sorted((r for r in mine if (r["step_rule"], r["gradient"]) == (rule, grad)),
+                         key=lambda r: r["t"])
+            ax.loglog([p["t"] for p in pts], [p["e"] for p in pts],
+                      "o-" if rule == "courant" else "s--", label=f"{grad}, {rule} step")
+            for p in pts:
+                ax.annotate(f"{p['dl'] * 1000:g}", (p["t"], p["e"]), fontsize=7,
+                            textcoords="offset points", xytext=(3, 3))
+        ax.set_xlabel("wall time of the run (s, median; labels: DL in mm)")
+        ax.set_ylabel(measure)
+        ax.set_title(sys.argv[3] if len(sys.argv) > 3 else mine[0]["study"])
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+        front += [r for r in mine
+                  if not any(o["t"] <= r["t"] and o["e"] < r["e"]
+                             or o["t"] < r["t"] and o["e"] <= r["e"] for o in mine)]
     fig.tight_layout()
     fig.savefig(sys.argv[2])
-    front = [r for r in rows
-             if not any(o["t"] <= r["t"] and o["e"] < r["e"] or o["t"] < r["t"] and o["e"] <= r["e"]
-                        for o in rows)]
     print("best front (no run both faster and more accurate):")
-    for r in sorted(front, key=lambda r: r["t"]):
-        print(f"  DL {r['dl'] * 1000:g} mm, {r['step_rule']} step, {r['gradient']}: "
-              f"{r['t']:.3g} s, error {r['e']:.3g}")
+    for r in sorted(front, key=lambda r: (r["error_measure"], r["t"])):
+        print(f"  {r['error_measure']}: DL {r['dl'] * 1000:g} mm, {r['step_rule']} step, "
+              f"{r['gradient']}: {r['t']:.3g} s, error {r['e']:.3g}")
     return 0 if all(math.isfinite(r["e"]) for r in front) else 1
 
 
