@@ -30,8 +30,8 @@
 //   Its wall time includes the 0.5 s of settling (the block held) that every case I run does.
 //   --samples PREFIX writes each run's samples to PREFIX_<dl>_<rule>.csv, as the reference's.
 //
-// Wall time: the stepping alone (scene building and the error's sampling excluded), the median
-// of --repeats runs; the runs are deterministic, so the error is that of every repeat (the
+// Wall time: the stepping and any settling (scene building and the error's sampling excluded), the
+// median of --repeats runs; the runs are deterministic, so the error is that of every repeat (the
 // step counts are checked equal). A run that becomes unstable gets error "nan", with the
 // steps and time it ran, and the solver's report on stderr.
 
@@ -67,12 +67,13 @@ using namespace dambreak;
 
 struct Result {
   std::int64_t particles = 0, steps = 0;
-  double seconds = 0.0;  // stepping only
+  double seconds = 0.0;  // stepping (settling included) only
   double error = 0.0;    // NaN if the run became unstable
   std::string unstable;  // the solver's report, if it did
 };
 
-/// Steps to each sample time, timing the stepping; `sample` sees the state at each.
+/// Settles if the case does, then steps to each sample time, timing both; `sample` sees the
+/// state at each.
 template <class Sample>
 Result run(const CaseSpec& spec, const std::vector<double>& times, Sample&& sample) {
   Simulation sim(spec, build_scene(spec));

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <vtkCharArray.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
@@ -219,6 +220,25 @@ TEST(ParticlesToGrid, DefaultGridFollowsTheFrameAndSurvivesTheXmlWriter) {
   EXPECT_NE(reader->GetOutput()->GetFieldData()->GetArray("DL"), nullptr);
 }
 
+/// The pressure at the points of g by the stock vtkPointInterpolator, fed the frame and
+/// vtkMPSKernel (so VTK's own locator finds the neighbours).
+vtkSmartPointer<vtkDataArray> stock_pressure(vtkImageData* g, vtkPolyData* frame, double radius,
+                                             int correction) {
+  vtkNew<vtkImageData> probe;
+  probe->DeepCopy(g);
+  probe->GetPointData()->Initialize();
+  vtkNew<vtkMPSKernel> kernel;
+  kernel->SetRadius(radius);
+  kernel->SetCorrection(correction);
+  vtkNew<vtkPointInterpolator> stock;
+  stock->SetInputData(probe);
+  stock->SetSourceData(frame);
+  stock->SetKernel(kernel);
+  stock->AddExcludedArray("kind");
+  stock->Update();
+  return stock->GetOutput()->GetPointData()->GetArray("pressure");
+}
+
 TEST(ParticlesToGrid, AgreesWithVtkPointInterpolatorGivenTheSameKernel) {
   auto frame = lattice_frame(
       20, 20, at_rest, [](double x, double y) { return std::sin(40 * x) * std::cos(25 * y); });
@@ -228,20 +248,8 @@ TEST(ParticlesToGrid, AgreesWithVtkPointInterpolatorGivenTheSameKernel) {
   f->SetSamplingBounds(0, 20 * kDl, 0, 20 * kDl, 0, 0);
   vtkImageData* g = grid_of(f, frame);
 
-  // The stock interpolator, fed the fluid particles and vtkMPSKernel.
-  vtkNew<vtkImageData> probe;
-  probe->DeepCopy(g);
-  probe->GetPointData()->Initialize();
-  vtkNew<vtkMPSKernel> kernel;
-  kernel->SetRadius(kRe);
-  vtkNew<vtkPointInterpolator> stock;
-  stock->SetInputData(probe);
-  stock->SetSourceData(frame);
-  stock->SetKernel(kernel);
-  stock->AddExcludedArray("kind");
-  stock->Update();
   auto* ours = g->GetPointData()->GetArray("pressure");
-  auto* theirs = stock->GetOutput()->GetPointData()->GetArray("pressure");
+  const auto theirs = stock_pressure(g, frame, kRe, vtkMPSKernel::LINEAR);
   ASSERT_NE(theirs, nullptr);
   for (vtkIdType i = 0; i < g->GetNumberOfPoints(); ++i) {
     if (g->GetPointData()->GetArray("vtkValidPointMask")->GetComponent(i, 0) == 0.0) continue;
@@ -275,22 +283,9 @@ TEST(ParticlesToGrid, OwnBinsFindWhatVtksLocatorFinds) {
       f->SetMinimumCoverage(0.0);
       f->SetSamplingBounds(-6 * kDl, 30 * kDl, -6 * kDl, 22 * kDl, 0, 0);
       vtkImageData* g = grid_of(f, frame);
-
-      vtkNew<vtkImageData> probe;
-      probe->DeepCopy(g);
-      probe->GetPointData()->Initialize();
-      vtkNew<vtkMPSKernel> kernel;
-      kernel->SetRadius(radius);
-      kernel->SetCorrection(correction);
-      vtkNew<vtkPointInterpolator> stock;
-      stock->SetInputData(probe);
-      stock->SetSourceData(frame);
-      stock->SetKernel(kernel);
-      stock->AddExcludedArray("kind");
-      stock->Update();
       auto* ours = g->GetPointData()->GetArray("pressure");
       auto* mask = g->GetPointData()->GetArray("vtkValidPointMask");
-      auto* theirs = stock->GetOutput()->GetPointData()->GetArray("pressure");
+      const auto theirs = stock_pressure(g, frame, radius, correction);
       ASSERT_NE(theirs, nullptr);
       int valid = 0, empty = 0;
       for (vtkIdType i = 0; i < g->GetNumberOfPoints(); ++i) {
