@@ -6,8 +6,14 @@
 // - CaseI/DL_um/threads: the study's case I (cases/caseI) from t = 0 without settling, the
 //   block moving, from DL 7 mm (27,000 particles) to the fine 2 mm case (316,000).
 //
-// Each iteration is one Simulation::step(); the scene is built and 20 steps are taken before
-// timing. Run:
+// - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
+//   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
+//   is moved off its lattice by up to 0.3 DL at random, as a flowing fluid is: on the lattice
+//   which neighbour is in is a regular pattern that a branch predictor learns, and a build
+//   there is twice as fast as in a run.
+//
+// Each iteration is one Simulation::step() (one list build); the scene is built and 20 steps are
+// taken before timing. Run:
 //   build/bin/bench_step --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/bench_step --benchmark_filter='DamBreak/2000/'   (one size)
 // The smoke test (ctest -R bench.step_smoke) runs the coarsest dam break for a few steps.
@@ -15,9 +21,13 @@
 #include <benchmark/benchmark.h>
 
 #include <memory>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "core/Parallel.h"
+#include "neighbours/CellGrid.h"
+#include "neighbours/NeighbourList.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
@@ -55,6 +65,34 @@ void CaseI(benchmark::State& state) {
   step(state, "caseI");
 }
 
+void NeighbourBuild(benchmark::State& state) {
+  const double dl = static_cast<double>(state.range(0)) * 1e-6;
+  set_thread_count(static_cast<int>(state.range(1)));
+  const auto sim = make("caseI", dl);  // its fluid is in cell order, as in a run
+  const Scene& scene = sim->scene();
+  const ParticleSet& ps = scene.particles;
+  std::vector<double> x = ps.now.x, y = ps.now.y;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.3 * dl, 0.3 * dl);
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    x[i] += jitter(random);
+    y[i] += jitter(random);
+  }
+  const double cutoff = sim->operators().re() + 0.2 * dl;  // the default skin, 0.2 DL
+  CellGrid grid;
+  grid.configure(scene.domain_lo, scene.domain_hi, cutoff);
+  NeighbourList lists;
+  const std::vector<IndexRange> owners = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
+  for (auto _ : state) {
+    grid.bin(x.data(), y.data(), ps.size());
+    lists.build(grid, x.data(), y.data(), ps.size(), cutoff, owners);
+    benchmark::DoNotOptimize(lists.pair_count());
+  }
+  state.counters["particles"] = static_cast<double>(ps.size());
+  state.counters["pairs_per_particle"] =
+      static_cast<double>(lists.pair_count()) / static_cast<double>(ps.size());
+}
+
 BENCHMARK(DamBreak)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{10000, 5000, 3500, 2000}, {1, 2}})
@@ -63,6 +101,11 @@ BENCHMARK(DamBreak)
 BENCHMARK(CaseI)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{7000, 5000, 3500, 2500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(NeighbourBuild)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/Parallel.h"
+
 namespace wcmps {
 
 void CellGrid::configure(Vec2 lo, Vec2 hi, double cell_size) {
@@ -32,6 +34,8 @@ void CellGrid::bin(const double* x, const double* y, std::int64_t n) {
   if (static_cast<std::int64_t>(members_.size()) != n) {
     members_.resize(n);
     cell_of_.resize(n);
+    xs_.resize(n);
+    ys_.resize(n);
   }
   // Counting sort: start_[c] .. start_[c + 1] is cell c; ids ascend within a cell.
   std::fill(start_.begin(), start_.end(), 0);
@@ -45,6 +49,10 @@ void CellGrid::bin(const double* x, const double* y, std::int64_t n) {
   for (std::int64_t i = 0; i < n; ++i) {
     members_[cursor_[cell_of_[i]]++] = static_cast<std::int32_t>(i);
   }
+  parallel_for(0, n, [&](std::int64_t k) {
+    xs_[k] = x[members_[k]];
+    ys_[k] = y[members_[k]];
+  });
 }
 
 }  // namespace wcmps

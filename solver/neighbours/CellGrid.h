@@ -33,8 +33,16 @@ class CellGrid {
   const std::int32_t* cell_end(int cx, int cy) const {
     return members_.data() + start_[cx + cy * nx_ + 1];
   }
+  /// Slots of cell (cx, cy) in cell order (row by row): [slot_begin, slot_end). The cells
+  /// bx0..bx1 of one row are the slots [slot_begin(bx0, cy), slot_end(bx1, cy)).
+  std::int32_t slot_begin(int cx, int cy) const { return start_[cx + cy * nx_]; }
+  std::int32_t slot_end(int cx, int cy) const { return start_[cx + cy * nx_ + 1]; }
   /// All binned particle ids in cell order (row by row).
   const std::vector<std::int32_t>& members() const { return members_; }
+  /// Coordinates of the binned particles in cell order: xs()[k] = x[members()[k]]. The search
+  /// reads these contiguously instead of gathering x[j] (NeighbourList::build).
+  const double* xs() const { return xs_.data(); }
+  const double* ys() const { return ys_.data(); }
 
  private:
   Vec2 lo_;
@@ -43,6 +51,7 @@ class CellGrid {
   int nx_ = 0, ny_ = 0;
   std::vector<std::int32_t> start_;    // nx*ny + 1 offsets into members_
   std::vector<std::int32_t> members_;  // particle ids, grouped by cell
+  std::vector<double> xs_, ys_;        // their coordinates, in the same order
   std::vector<std::int32_t> cell_of_;  // cell of each particle
   std::vector<std::int32_t> cursor_;   // fill position per cell while binning
 };

@@ -95,6 +95,23 @@ TEST(NeighbourList, ParticlesOutsideTheGridAreBinnedAtItsEdge) {
   expect_equal_to_brute_force(x, y, {0, 0}, {1, 1}, 0.01, 0.01, {{0, 3}});
 }
 
+TEST(NeighbourList, CrowdedCellsMatchBruteForce) {
+  // 900 particles in four cells: more candidates than the fill's stack buffer holds (511), so
+  // these take the other fill; 300 sparse ones around them take the buffered one.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> crowd(0.48, 0.52), u(0.0, 1.0);
+  std::vector<double> x, y;
+  for (int k = 0; k < 900; ++k) {
+    x.push_back(crowd(rng));
+    y.push_back(crowd(rng));
+  }
+  for (int k = 0; k < 300; ++k) {
+    x.push_back(u(rng));
+    y.push_back(u(rng));
+  }
+  expect_equal_to_brute_force(x, y, {0, 0}, {1, 1}, 0.05, 0.05, {{0, 1200}});
+}
+
 TEST(CellGrid, BinsEveryParticleOnceInCellOrder) {
   std::vector<double> x{0.05, 0.15, 0.05, 0.95}, y{0.05, 0.05, 0.95, 0.95};
   CellGrid g;
@@ -105,6 +122,13 @@ TEST(CellGrid, BinsEveryParticleOnceInCellOrder) {
   EXPECT_EQ(g.members(), (std::vector<std::int32_t>{0, 1, 2, 3}));
   EXPECT_EQ(g.cell_end(0, 0) - g.cell_begin(0, 0), 1);
   EXPECT_EQ(*g.cell_begin(9, 9), 3);
+  EXPECT_EQ(g.slot_begin(9, 9), 3);
+  EXPECT_EQ(g.slot_end(9, 9), 4);
+  // The coordinates in cell order, for the search's contiguous reads.
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(g.xs()[k], x[g.members()[k]]);
+    EXPECT_EQ(g.ys()[k], y[g.members()[k]]);
+  }
 }
 
 }  // namespace
