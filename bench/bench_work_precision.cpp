@@ -270,7 +270,12 @@ std::string reference_key(const CaseSpec& spec, double time, const std::string& 
                 spec.dl, time, section.c_str(), spec.settle_time,
                 spec.step_mode == TimeStepMode::Fixed ? "fixed" : "courant",
                 spec.step_mode == TimeStepMode::Fixed ? spec.fixed_step : spec.courant);
-  return key;
+  std::string k = key;
+  if (spec.settle_courant) {
+    std::snprintf(key, sizeof key, " settle_courant=%g", *spec.settle_courant);
+    k += key;
+  }
+  return k;
 }
 
 bool read_reference(const std::string& path, const std::string& key, CaseISamples& ref) {

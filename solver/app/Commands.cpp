@@ -185,6 +185,15 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
   }
   line("end time            %g s (about %.0f steps at most)", spec.end_time,
        std::ceil(spec.end_time / dt));
+  if (spec.settle_time > 0.0) {
+    const TimeStepRule settle = settle_step_rule(spec, scene.sound_speed);
+    const double settle_dt = settle.step(0.0);
+    line("settling            %g s before t = 0, damping time %g s, %s %g (about %.0f steps)",
+         spec.settle_time, spec.settle_damping,
+         settle.mode == TimeStepMode::Fixed ? "fixed step" : "Courant",
+         settle.mode == TimeStepMode::Fixed ? settle.fixed : settle.courant,
+         std::ceil(spec.settle_time / settle_dt));
+  }
   std::string fields, kinds;
   for (auto f : spec.output_fields) {
     for (const auto& fi : kFields) {

@@ -584,6 +584,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
         r.choice("initial_state", "hydrostatic", {"hydrostatic", "lattice"}) == "hydrostatic";
     c.settle_time = r.number("settle_time", 0.0, 0.0, kInf);
     c.settle_damping = r.number("settle_damping", 0.1, 0.0, kInf, true);
+    c.settle_courant = r.optional_number("settle_courant", 0.0, 1.0, true);
     r.finish();
   }
   {

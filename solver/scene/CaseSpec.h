@@ -163,6 +163,9 @@ struct CaseSpec {
   /// Settling before t = 0 (s of damped motion; 0 = none), and its damping time (s).
   double settle_time = 0.0;
   double settle_damping = 0.1;
+  /// Courant number of the settling steps (the Courant rule whatever the run's step); unset:
+  /// settling takes the run's steps.
+  std::optional<double> settle_courant;
 
   // [physics]
   double density = 1000.0;              ///< rho0 (kg/m^3)
@@ -232,6 +235,17 @@ inline TimeStepRule time_step_rule(const CaseSpec& spec, double c0) {
   rule.dl = spec.dl;
   rule.c0 = c0;
   rule.nu = spec.kinematic_viscosity;
+  return rule;
+}
+
+/// The time-step rule of the settling before t = 0: the Courant rule with settle_courant if the
+/// case gives it, else the run's rule.
+inline TimeStepRule settle_step_rule(const CaseSpec& spec, double c0) {
+  TimeStepRule rule = time_step_rule(spec, c0);
+  if (spec.settle_courant) {
+    rule.mode = TimeStepMode::Courant;
+    rule.courant = *spec.settle_courant;
+  }
   return rule;
 }
 

@@ -66,6 +66,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       settle_damping_(spec.settle_damping),
       settling_(spec.settle_time > 0.0) {
   rule_ = wcmps::time_step_rule(spec, scene_.sound_speed);
+  settle_rule_ = wcmps::settle_step_rule(spec, scene_.sound_speed);
   ParticleSet& ps = scene_.particles;
   grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
   list_owners_ = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
@@ -176,9 +177,10 @@ BodyForce Simulation::body_force(const double* input) {
 }
 
 void Simulation::step(double t_stop) {
-  double dt = rule_.step(max_speed_);
+  const TimeStepRule& rule = active_rule();
+  double dt = rule.step(max_speed_);
   bool lands_on_stop = false;
-  if (rule_.mode == TimeStepMode::Courant) {
+  if (rule.mode == TimeStepMode::Courant) {
     // Land exactly on t_stop, without leaving a sliver of a step before it.
     if (time_ + dt >= t_stop) {
       dt = t_stop - time_;
@@ -213,8 +215,8 @@ void Simulation::step(double t_stop) {
   wall_collisions_ += next_collisions_;
   ++steps_;
   last_dt_ = dt;
-  if (rule_.mode == TimeStepMode::Fixed) {
-    time_ = static_cast<double>(steps_) * rule_.fixed;  // no drift over many steps
+  if (rule.mode == TimeStepMode::Fixed) {
+    time_ = static_cast<double>(steps_) * rule.fixed;  // no drift over many steps
   } else {
     time_ = lands_on_stop ? t_stop : time_ + dt;
   }

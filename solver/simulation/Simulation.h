@@ -36,12 +36,13 @@ class Simulation {
 
   /// Settling before t = 0 (dynamic relaxation), if the case asks for it ([particles]
   /// settle_time): the scene runs for settle_time seconds with every fluid velocity damped by
-  /// exp(-dt / settle_damping) after each step; then the velocities, the clock, the step count
-  /// and the performance counters are set to zero. The water then starts in the discrete
-  /// equilibrium of its particles and walls instead of the hydrostatic state of the lattice,
-  /// which along an inclined bed is kilopascals off (docs/method.md). The body is held.
-  /// settle_step() is one such step (the one that reaches settle_time ends settling), so that
-  /// a run can checkpoint and stop during settling; settle() does all of it. Both throw
+  /// exp(-dt / settle_damping) after each step, at steps of its own Courant number if the case
+  /// gives one (settle_courant: only where settling ends matters, not its path); then the
+  /// velocities, the clock, the step count and the performance counters are set to zero. The water
+  /// then starts in the discrete equilibrium of its particles and walls instead of the hydrostatic
+  /// state of the lattice, which along an inclined bed is kilopascals off (docs/method.md). The
+  /// body is held. settle_step() is one such step (the one that reaches settle_time ends settling),
+  /// so that a run can checkpoint and stop during settling; settle() does all of it. Both throw
   /// InstabilityError like step().
   bool settling() const { return settling_; }
   void settle_step();
@@ -59,14 +60,17 @@ class Simulation {
   std::int64_t steps() const { return steps_; }
   double last_dt() const { return last_dt_; }
   /// The step the time-step rule would take now.
-  double next_dt() const { return rule_.step(max_speed_); }
+  double next_dt() const { return active_rule().step(max_speed_); }
   double max_speed() const { return max_speed_; }
   double density() const { return density_; }
 
   const ParticleSet& particles() const { return scene_.particles; }
   const Scene& scene() const { return scene_; }
   const MpsOperators& operators() const { return ops_; }
+  /// The run's time-step rule (after settling).
   const TimeStepRule& time_step_rule() const { return rule_; }
+  /// The rule of the next step: the settling's while settling ([particles] settle_courant).
+  const TimeStepRule& active_rule() const { return settling_ ? settle_rule_ : rule_; }
   const PhaseTimer& timer() const { return timer_; }
   /// The state a continued run needs, for checkpoints: every particle's fields, the
   /// positions the neighbour lists were built from (on loading, the lists are rebuilt from them
@@ -121,7 +125,7 @@ class Simulation {
   bool zero_negative_pressure_;
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
-  TimeStepRule rule_;
+  TimeStepRule rule_, settle_rule_;
   Vec2 gravity_;
   double density_;
   double skin_;

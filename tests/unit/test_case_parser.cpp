@@ -235,6 +235,13 @@ TEST(CaseParser, TankErrorsAreNamed) {
                "unknown key 'lenght' in [tank]");
   expect_error(replace(kTank, "[particles]", "[particles]\nsettle_damping = 0.0"), 5,
                "settle_damping");
+  expect_error(replace(kTank, "[particles]", "[particles]\nsettle_courant = 1.5"), 5,
+               "[particles] settle_courant: value 1.5 is out of range (0, 1]");
+  EXPECT_FALSE(parse_case_text(kTank, "t.toml").settle_courant);
+  EXPECT_EQ(
+      parse_case_text(replace(kTank, "[particles]", "[particles]\nsettle_courant = 0.8"), "t.toml")
+          .settle_courant,
+      0.8);
 }
 
 /// The study's tank and block, case I or II (../shared/spec/cases.md) at the study's DL.

@@ -244,6 +244,27 @@ TEST(Settle, StartsTheClockAtZeroFromRest) {
   EXPECT_GT(sim.time(), 0.0);
 }
 
+TEST(Settle, TakesItsOwnCourantNumberAndTheRunKeepsItsStep) {
+  // settle_courant = 1.0 with the run's fixed step: settling takes Courant steps of 1.0 (and
+  // lands on settle_time), then the run takes its fixed steps from t = 0.
+  CaseSpec spec = minimal();
+  spec.settle_time = 0.01;
+  spec.settle_courant = 1.0;
+  spec.step_mode = TimeStepMode::Fixed;
+  spec.fixed_step = 1e-5;
+  Simulation sim(spec, build_scene(spec));
+  const double c0 = sim.scene().sound_speed;
+  EXPECT_DOUBLE_EQ(sim.next_dt(), 1.0 * 0.01 / c0);
+  sim.settle_step();
+  EXPECT_DOUBLE_EQ(sim.last_dt(), 1.0 * 0.01 / c0);
+  sim.settle();
+  EXPECT_LE(sim.settle_steps(), static_cast<std::int64_t>(std::ceil(0.01 * c0 / 0.01)) + 1);
+  EXPECT_EQ(sim.next_dt(), 1e-5);
+  sim.step(1.0);
+  EXPECT_EQ(sim.last_dt(), 1e-5);
+  EXPECT_EQ(sim.time(), 1e-5);
+}
+
 TEST(Settle, TheRunSummaryReportsItApartFromTheRun) {
   // A run with settling: frames start at t = 0 from rest, run.json gives the settling's steps
   // and wall time, and the run's steps and rates leave it out.
