@@ -12,8 +12,8 @@
 //   which neighbour is in is a regular pattern that a branch predictor learns, and a build
 //   there is twice as fast as in a run.
 //
-// Each iteration is one Simulation::step() (one list build); the scene is built and 20 steps are
-// taken before timing. Run:
+// Each iteration is one Simulation::step() (for NeighbourBuild one binning and build); the scene
+// is built and 20 steps are taken before timing. Run:
 //   build/bin/bench_step --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/bench_step --benchmark_filter='DamBreak/2000/'   (one size)
 // The smoke test (ctest -R bench.step_smoke) runs the coarsest dam break for a few steps.
