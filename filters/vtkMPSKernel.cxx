@@ -32,7 +32,11 @@ vtkIdType vtkMPSKernel::ComputeWeights(double x[3], vtkIdList* pIds, vtkDoubleAr
                                        vtkDoubleArray* weights, double* weightSum) {
   const vtkIdType n = pIds->GetNumberOfIds();
   weights->SetNumberOfTuples(n);
-  std::vector<double> dx(n), dy(n);
+  // Per thread and reused: vtkPointInterpolator calls this once per probed point, from its
+  // SMP threads, and a fresh vector each call would allocate in that loop.
+  thread_local std::vector<double> dx, dy;
+  dx.resize(n);
+  dy.resize(n);
   double xj[3];
   for (vtkIdType k = 0; k < n; ++k) {
     this->DataSet->GetPoint(pIds->GetId(k), xj);
