@@ -3,10 +3,13 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 #include "app/EmbeddedCase.h"
 #include "app/ExitCodes.h"
@@ -34,6 +37,18 @@ namespace {
 CaseSpec load_case(const std::string& file) {
   if (file.empty()) return parse_case_text(kEmbeddedCaseText, std::string(kEmbeddedCasePath));
   return parse_case_file(file);
+}
+
+/// True when the run.json in @p dir says the run completed at step @p steps: a run that reached
+/// its end time and then was killed before writing its summary has not (the summary is the
+/// last thing a run writes), and a restart finishes it.
+bool summary_says_completed(const fs::path& dir, std::int64_t steps) {
+  std::ifstream in(dir / RunFiles::kSummary);
+  if (!in) return false;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object() || j.value("status", "") != "completed") return false;
+  const auto t = j.find("time");
+  return t != j.end() && t->is_object() && t->value("steps", std::int64_t{-1}) == steps;
 }
 
 std::string duration(double s) {
@@ -317,7 +332,8 @@ int run_command(const RunOptions& o) {
       }
       const TimeStepRule& rule = sim->time_step_rule();
       const double tolerance = rule.mode == TimeStepMode::Fixed ? 0.5 * rule.fixed : 0.0;
-      if (!sim->settling() && sim->time() >= spec.end_time - tolerance) {
+      if (!sim->settling() && sim->time() >= spec.end_time - tolerance &&
+          summary_says_completed(dir, sim->steps())) {
         std::cerr << "wcmps: error: the run in " << dir.string()
                   << " has reached t = " << sim->time() << " s, its end time " << spec.end_time
                   << " s: give a later --end-time to continue it\n";

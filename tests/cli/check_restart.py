@@ -8,7 +8,8 @@ file is left for the restart to remove) and by SIGINT
 (during settling) and continued with `--restart` (with 1 thread where the reference had 2),
 which must end with the same files as the reference, byte for byte; a corrupted newest checkpoint (the older one is used); an edited case.toml, a run
 without checkpoints and a directory without a run (exit 7); a finished run continued to a later
-end time, which must equal a run made to that time at once.
+end time, which must equal a run made to that time at once; a run killed between its final
+checkpoint and its run.json, which the restart finishes.
 
 MODE "diskfull": runs on a disk that fills up (LD_PRELOAD of tests/support/full_disk.c, given as
 TRIALS' place: the library's path) after 0.3 to 3 MB: each must exit 4 with one line saying
@@ -207,6 +208,22 @@ def stops():
     # A finished run: not again to the same end; continued to a later one, it equals a run made
     # to that end at once (0.3 s is an output time, so both land on it).
     expect(run("run", "--restart", ref), 2, "give a later --end-time")
+    # Killed after its final checkpoint but before its summary (run.json, written last): absent,
+    # or left by an earlier stop. The restart finishes the run: the summary, nothing else to do.
+    for left in ("absent", "stopped"):
+        d = fresh(f"killed_at_end_{left}")
+        shutil.copytree(ref, d)
+        summary = status(d)
+        os.remove(os.path.join(d, "run.json"))
+        if left == "stopped":
+            summary["status"] = "stopped"
+            with open(os.path.join(d, "run.json"), "w") as f:
+                json.dump(summary, f)
+        expect(run("run", "--restart", d), 0)
+        same_files(ref, d, f"killed before the summary ({left}) + restart")
+        if status(d)["status"] != "completed":
+            fail(f"killed before the summary ({left}): the restart's run.json is not 'completed'")
+    print("killed between the final checkpoint and run.json: the restart finishes the run")
     longer = reference("reference_longer", "--end-time", "0.34")
     expect(run("run", "--restart", ref, "--end-time", "0.34"), 0)
     same_files(longer, ref, "a finished run continued to a later end")
