@@ -254,8 +254,10 @@ def kill9():
             outcomes.append(f"{delay:.2f} s: {n} frames, killed before the first checkpoint "
                             f"(exit 7: {r.stderr.strip().split(': ')[-1]})")
             continue
-        if p.returncode == 0 and r.returncode == 2:
-            outcomes.append(f"{delay:.2f} s: finished before the kill")
+        # Finished (run.json written last, saying so) before the kill, or before exiting.
+        if r.returncode == 2 and status(d)["status"] == "completed":
+            same_files(ref, d, f"kill -9 after {delay:.2f} s, finished")
+            outcomes.append(f"{delay:.2f} s: finished before the kill (exit {p.returncode})")
             continue
         expect(r, 0)
         same_files(ref, d, f"kill -9 after {delay:.2f} s + restart")
