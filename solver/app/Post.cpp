@@ -34,6 +34,7 @@
 #include "io/FrameReader.h"
 #include "io/RunDirectory.h"
 #include "io/SeriesIndex.h"
+#include "io/VtkXmlFile.h"
 #include "scene/CaseParser.h"
 
 namespace fs = std::filesystem;
@@ -215,11 +216,7 @@ int post_command(const PostOptions& o) {
         vtkNew<vtkXMLImageDataWriter> w;
         w->SetInputConnection(grid->GetOutputPort());
         w->SetDataModeToBinary();
-        // In memory, then atomically by us: VTK's XML writers crash when a write fails
-        // part-way (disk full).
-        w->WriteToOutputStringOn();
-        if (w->Write() != 1) throw IoError(file.string() + ": cannot encode the grid");
-        write_file_atomically(file, w->GetOutputString());
+        write_vtk_xml_atomically(*w, file);
         grid_pvd +=
             "    <DataSet timestep=\"" + t + "\" group=\"\" part=\"0\" file=\"" + name + "\"/>\n";
       }

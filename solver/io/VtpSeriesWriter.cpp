@@ -21,6 +21,7 @@
 #include "core/Error.h"
 #include "io/AtomicFile.h"
 #include "io/RunDirectory.h"
+#include "io/VtkXmlFile.h"
 
 namespace fs = std::filesystem;
 
@@ -187,13 +188,7 @@ void VtpSeriesWriter::write_frame(const Simulation& sim) {
   // few kB ("not well-formed (invalid token)"), raw or encoded. Pinned by a test.
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToLZ4();
-  // Encoded in memory, written by us: VTK 9.2's XML writer frees an invalid pointer when a
-  // write fails part-way (disk full), and this way the file is written atomically.
-  writer->WriteToOutputStringOn();
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0) {
-    throw IoError("cannot encode frame " + path.string());
-  }
-  write_file_atomically(path, writer->GetOutputString());
+  write_vtk_xml_atomically(*writer, path);
   entries_.push_back({sim.time(), sim.steps(), file});
   write_series();
 }

@@ -9,6 +9,10 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
+#include <cstring>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -182,6 +186,77 @@ TEST(AtomicFile, ReplacesContentAndLeavesNoTemporary) {
   for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
   EXPECT_EQ(files, 1);
   EXPECT_THROW(write_file_atomically(dir / "missing" / "a.txt", "x"), IoError);
+}
+
+std::size_t regular_files(const fs::path& dir) {
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.is_regular_file();
+  return n;
+}
+
+// More than the 64 KiB buffer, with a seek back into what was flushed (as VTK's XML writer
+// does for a compression header) and forth to the end.
+TEST(AtomicOutputFile, StreamsSeeksBackAndRenamesOnCommit) {
+  const auto dir = test::scratch_dir("atomic_stream");
+  std::string expected;
+  for (int k = 0; k < 30000; ++k) expected += "line " + std::to_string(k) + "\n";
+  {
+    AtomicOutputFile file(dir / "a.txt");
+    std::ostream& os = file.stream();
+    os << expected.substr(0, 100000);
+    os.flush();
+    EXPECT_EQ(static_cast<std::streamoff>(os.tellp()), 100000);
+    os.seekp(10);
+    os << "XY";
+    os.seekp(0, std::ios_base::end);
+    os << expected.substr(100000);
+    EXPECT_TRUE(os.good());
+    EXPECT_FALSE(fs::exists(dir / "a.txt"));  // under its temporary name until committed
+    file.commit();
+  }
+  expected.replace(10, 2, "XY");
+  EXPECT_EQ(read_text(dir / "a.txt"), expected);
+  EXPECT_EQ(regular_files(dir), 1u);
+
+  {
+    AtomicOutputFile abandoned(dir / "b.txt");
+    abandoned.stream() << "never committed";
+  }
+  EXPECT_FALSE(fs::exists(dir / "b.txt"));
+  EXPECT_EQ(regular_files(dir), 1u);
+}
+
+// A write that fails part-way (here the file-size limit, EFBIG, as a stand-in for a full disk):
+// the stream does not fail (VTK's XML writer must not see it), commit() throws naming the file,
+// and nothing is left.
+TEST(AtomicOutputFile, AFailedWriteIsReportedByCommitAndLeavesNothing) {
+  const auto dir = test::scratch_dir("atomic_stream_fail");
+  rlimit before{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
+  rlimit small = before;
+  small.rlim_cur = 100000;
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  bool good = false;
+  std::string message;
+  {
+    AtomicOutputFile file(dir / "big.txt");
+    file.stream() << std::string(300000, 'x');
+    file.stream().flush();
+    good = file.stream().good();
+    try {
+      file.commit();
+    } catch (const IoError& e) {
+      message = e.what();
+    }
+  }
+  ::setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_TRUE(good);
+  EXPECT_NE(message.find("cannot write " + (dir / "big.txt").string()), std::string::npos)
+      << message;
+  EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+  EXPECT_EQ(regular_files(dir), 0u);
 }
 
 TEST(RunDirectory, NewEarlierAndForeignDirectories) {
