@@ -55,25 +55,9 @@ void replace_file(const std::filesystem::path& tmp, const std::filesystem::path&
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content,
                            Durability durability) {
-  const auto tmp = temporary_path_for(path);
-  const int fd = open_temporary(tmp, path);
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t w = ::write(fd, content.data() + done, content.size() - done);
-    if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) {
-      const int err = w < 0 ? errno : EIO;
-      ::close(fd);
-      remove_quietly(tmp);
-      throw IoError("cannot write " + path.string() + ": " + std::strerror(err));
-    }
-    done += static_cast<std::size_t>(w);
-  }
-  if (const int err = close_file(fd, durability)) {
-    remove_quietly(tmp);
-    throw IoError("cannot write " + path.string() + ": " + std::strerror(err));
-  }
-  replace_file(tmp, path);
+  AtomicOutputFile file(path);
+  file.stream().write(content.data(), static_cast<std::streamsize>(content.size()));
+  file.commit(durability);
 }
 
 AtomicOutputFile::AtomicOutputFile(std::filesystem::path path)
