@@ -78,7 +78,7 @@ void NeighbourBuild(benchmark::State& state) {
     x[i] += jitter(random);
     y[i] += jitter(random);
   }
-  const double cutoff = sim->operators().re() + 0.2 * dl;  // the default skin, 0.2 DL
+  const double cutoff = sim->list_cutoff();
   CellGrid grid;
   grid.configure(scene.domain_lo, scene.domain_hi, cutoff);
   NeighbourList lists;

@@ -76,7 +76,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   rule_ = wcmps::time_step_rule(spec, scene_.sound_speed);
   settle_rule_ = wcmps::settle_step_rule(spec, scene_.sound_speed);
   ParticleSet& ps = scene_.particles;
-  grid_.configure(scene_.domain_lo, scene_.domain_hi, spec.re() + skin_);
+  grid_.configure(scene_.domain_lo, scene_.domain_hi, list_cutoff());
   list_owners_ = {{0, ps.wall_end()}, {ps.fluid_begin(), ps.size()}};
   order_.resize(ps.fluid_count());
   x_built_.resize(ps.size());
@@ -321,7 +321,7 @@ void Simulation::load(StateReader& in) {
     body_history_.assign(history.begin(), history.end());  // keeps the run's reservation
   }
   grid_.bin(x_built_.data(), y_built_.data(), ps.size());
-  neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), ops_.re() + skin_,
+  neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), list_cutoff(),
                     list_owners_);
   find_fluid_near_walls();
   built_ = true;
@@ -346,7 +346,7 @@ void Simulation::rebuild_neighbours() {
     last_sort_step_ = steps_;
   }
   grid_.bin(ps.now.x.data(), ps.now.y.data(), ps.size());
-  neighbours_.build(grid_, ps.now.x.data(), ps.now.y.data(), ps.size(), ops_.re() + skin_,
+  neighbours_.build(grid_, ps.now.x.data(), ps.now.y.data(), ps.size(), list_cutoff(),
                     list_owners_);
   // All of them (the body's move), so that a checkpoint can rebuild these lists.
   parallel_for(0, ps.size(), [&](std::int64_t i) {

@@ -67,6 +67,8 @@ class Simulation {
   const ParticleSet& particles() const { return scene_.particles; }
   const Scene& scene() const { return scene_; }
   const MpsOperators& operators() const { return ops_; }
+  /// Cutoff of the neighbour lists: re plus the skin ([neighbours] skin x DL).
+  double list_cutoff() const { return ops_.re() + skin_; }
   /// The run's time-step rule (after settling).
   const TimeStepRule& time_step_rule() const { return rule_; }
   /// The rule of the next step: the settling's while settling ([particles] settle_courant).
