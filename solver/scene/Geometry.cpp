@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace wcmps {
@@ -48,6 +49,35 @@ std::vector<Segment> polyline_segments(const std::vector<Vec2>& pts, bool closed
   for (std::size_t i = 0; i + 1 < pts.size(); ++i) s.push_back({pts[i], pts[i + 1]});
   if (closed) s.push_back({pts.back(), pts.front()});
   return s;
+}
+
+WallSurface wall_surface(const std::vector<Vec2>& points, bool closed, bool solid_on_right) {
+  WallSurface w;
+  w.surface = polyline_segments(points, closed);
+  w.normals = solid_normals(w.surface, solid_on_right);
+  w.closed = closed;
+  return w;
+}
+
+double signed_distance(const WallSurface& w, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  double sign = -1.0;
+  for (std::size_t s = 0; s < w.surface.size(); ++s) {
+    const Vec2 a = w.surface[s].a, b = w.surface[s].b;
+    const double d = distance_to_segment(p, a, b);
+    if (d < best - 1e-15) {
+      best = d;
+      const Vec2 ab = b - a;
+      const double t = dot(p - a, ab) / dot(ab, ab);
+      Vec2 n = w.normals[s];
+      // At a vertex shared with a neighbouring segment, use the mean of both normals.
+      const std::size_t ns = w.surface.size();
+      if (t <= 0.0 && (s > 0 || w.closed)) n = n + w.normals[(s + ns - 1) % ns];
+      if (t >= 1.0 && (s + 1 < ns || w.closed)) n = n + w.normals[(s + 1) % ns];
+      sign = dot(p - (a + std::clamp(t, 0.0, 1.0) * ab), n) > 0.0 ? 1.0 : -1.0;
+    }
+  }
+  return sign * best;
 }
 
 std::vector<Vec2> solid_normals(const std::vector<Segment>& segments, bool solid_on_right) {

@@ -30,6 +30,19 @@ std::vector<Segment> polyline_segments(const std::vector<Vec2>& points, bool clo
 /// Unit normal of each segment pointing to the solid side.
 std::vector<Vec2> solid_normals(const std::vector<Segment>& segments, bool solid_on_right);
 
+/// A wall's surface: its segments and their unit normals into the solid.
+struct WallSurface {
+  std::vector<Segment> surface;
+  std::vector<Vec2> normals;
+  bool closed = false;
+};
+
+WallSurface wall_surface(const std::vector<Vec2>& points, bool closed, bool solid_on_right);
+
+/// Signed distance of p to the wall surface: negative on the fluid side, positive in the
+/// solid, using the normal of the nearest segment (the mean normal at a shared vertex).
+double signed_distance(const WallSurface& w, Vec2 p);
+
 /// The polyline moved by `distance` along the solid normals, with mitred joins (so that rows
 /// at successive distances nest around corners). Throws std::domain_error if a segment would
 /// turn back on itself (a corner too sharp for the offset).

@@ -27,35 +27,9 @@ std::string fluid_label(const CaseSpec& spec, std::size_t k) {
   return l.empty() ? "[[fluid]] #" + std::to_string(k + 1) : l;
 }
 
-struct WallGeometry {
-  std::vector<Segment> surface;
-  std::vector<Vec2> normals;  // into the solid
-  bool closed = false;
+struct WallGeometry : WallSurface {
   double thickness = 0.0;  // from the surface to the last ghost row + DL/2
 };
-
-/// Signed distance of p to the wall surface: negative on the fluid side, positive in the
-/// solid, using the normal of the nearest segment (the mean normal at a shared vertex).
-double signed_distance(const WallGeometry& w, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  double sign = -1.0;
-  for (std::size_t s = 0; s < w.surface.size(); ++s) {
-    const Vec2 a = w.surface[s].a, b = w.surface[s].b;
-    const double d = distance_to_segment(p, a, b);
-    if (d < best - 1e-15) {
-      best = d;
-      const Vec2 ab = b - a;
-      const double t = dot(p - a, ab) / dot(ab, ab);
-      Vec2 n = w.normals[s];
-      // At a vertex shared with a neighbouring segment, use the mean of both normals.
-      const std::size_t ns = w.surface.size();
-      if (t <= 0.0 && (s > 0 || w.closed)) n = n + w.normals[(s + ns - 1) % ns];
-      if (t >= 1.0 && (s + 1 < ns || w.closed)) n = n + w.normals[(s + 1) % ns];
-      sign = dot(p - (a + std::clamp(t, 0.0, 1.0) * ab), n) > 0.0 ? 1.0 : -1.0;
-    }
-  }
-  return sign * best;
-}
 
 /// Does the ray from p along direction g hit the fluid side of a wall surface?
 bool has_wall_along(const std::vector<WallGeometry>& walls, Vec2 p, Vec2 g, double reach) {
@@ -103,8 +77,10 @@ std::vector<std::vector<std::size_t>> column_runs(const std::vector<ParticleSeed
 /// (1 + gamma g h / c0^2)^(1/gamma) at depth h below the top of its column (gravity along -y):
 /// rows are moved closer, to the spacing whose lattice sum gives n/n0 = s (the discrete n of
 /// a squeezed lattice grows 1.23 times faster than 1/dy at re = 3.5 DL), the bottom row
-/// staying. Depths repeat from column to column, so each spacing is solved once.
-void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spec, double c0) {
+/// staying. Depths repeat from column to column, so each spacing is solved once. `ratio` gets each
+/// particle's s at its depth (the number density a continuity-evolved n starts from).
+void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spec, double c0,
+                           std::vector<double>& ratio) {
   const double dl = spec.dl;
   const double g = -spec.gravity.y;
   auto s = [&](double depth) {
@@ -123,6 +99,7 @@ void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spe
   }
   for (const auto& run : column_runs(fluid, spec)) {
     const double top = column_top[column_of(fluid[run.front()].position.x)];
+    for (const std::size_t k : run) ratio[k] = s(top - fluid[k].position.y);
     double y = fluid[run.front()].position.y;
     for (std::size_t k = 1; k < run.size(); ++k) {
       const double depth = top - 0.5 * (fluid[run[k]].position.y + fluid[run[k - 1]].position.y);
@@ -167,9 +144,7 @@ Scene build_scene(const CaseSpec& spec) {
       body_rows_begin = scene.wall_rows.size();
     }
     WallGeometry g;
-    g.surface = polyline_segments(ws.points, ws.closed);
-    g.normals = solid_normals(g.surface, ws.solid_on_right);
-    g.closed = ws.closed;
+    static_cast<WallSurface&>(g) = wall_surface(ws.points, ws.closed, ws.solid_on_right);
     g.thickness = (scene.ghost_layers + 1) * dl;
     const std::size_t first_wall = walls.size();
     for (int k = 0; k <= scene.ghost_layers; ++k) {
@@ -374,13 +349,14 @@ Scene build_scene(const CaseSpec& spec) {
     }
     scene.sound_speed = spec.sound_speed_factor * std::sqrt(2.0 * g * scene.fluid_height);
   }
+  scene.fluid_density_ratio.assign(fluid.size(), 1.0);
   if (spec.hydrostatic_start && g > 0.0) {
     if (spec.gravity.x != 0.0 || spec.gravity.y >= 0.0) {
       throw CaseError(spec.file,
                       "[particles] initial_state = \"hydrostatic\" needs gravity along -y; "
                       "use initial_state = \"lattice\"");
     }
-    set_hydrostatic_state(fluid, spec, scene.sound_speed);
+    set_hydrostatic_state(fluid, spec, scene.sound_speed, scene.fluid_density_ratio);
   }
   scene.particles = ParticleSet(walls, ghosts, ghost_sources, fluid);
   if (spec.body) {

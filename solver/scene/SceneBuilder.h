@@ -45,6 +45,11 @@ struct Scene {
   std::int64_t trimmed_fluid = 0;    ///< lattice points dropped within the wall clearance
   std::int64_t displaced_fluid = 0;  ///< lattice points inside closed walls (solid bodies)
   std::optional<BodyParticles> body;
+  /// n/n0 of each fluid particle at the start, in the order of their ids (fluid particle with id
+  /// fluid_begin + k is entry k): s(h) of the hydrostatic state at its depth, or 1 on the lattice.
+  /// Where the number density is evolved (continuity), it starts from this, not from the sum,
+  /// whose kernels are incomplete at the surface and against the walls.
+  std::vector<double> fluid_density_ratio;
 };
 
 /// Builds the scene; throws CaseError when the geometry makes no sense (fluid inside a wall or
