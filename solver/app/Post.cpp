@@ -36,6 +36,7 @@
 #include "io/SeriesIndex.h"
 #include "io/VtkXmlFile.h"
 #include "scene/CaseParser.h"
+#include "simulation/WaterCavity.h"
 
 namespace fs = std::filesystem;
 
@@ -81,6 +82,34 @@ bool block_point(vtkPolyData* frame, const std::string& name, double out[2]) {
     if (name == "F") out[c] = 0.5 * (corner(1, c) + corner(2, c));
   }
   return true;
+}
+
+/// The water cavity (simulation/WaterCavity.h) of a frame: its particles by kind and the block
+/// where it is now.
+CavityMeasure measure_cavity(const WaterCavity& cavity, vtkPolyData* frame, const fs::path& file) {
+  vtkDataArray* kinds = frame->GetPointData()->GetArray("kind");
+  if (!kinds) {
+    throw IoError(file.string() +
+                  ": the cavity needs the particles' kind in the frames "
+                  "([output] fields)");
+  }
+  const vtkIdType n = frame->GetNumberOfPoints();
+  std::vector<double> x(n), y(n);
+  std::vector<ParticleKind> kind(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    double p[3];
+    frame->GetPoint(i, p);
+    x[i] = p[0];
+    y[i] = p[1];
+    kind[i] = static_cast<ParticleKind>(static_cast<int>(kinds->GetComponent(i, 0)));
+  }
+  std::vector<Vec2> outline;
+  if (vtkDataArray* o = frame->GetFieldData()->GetArray("BlockOutline")) {
+    for (vtkIdType k = 0; k < o->GetNumberOfTuples(); ++k) {
+      outline.push_back({o->GetComponent(k, 0), o->GetComponent(k, 1)});
+    }
+  }
+  return cavity.measure(x.data(), y.data(), kind.data(), n, outline);
 }
 
 class Stopwatch {
@@ -309,6 +338,22 @@ int post_command(const PostOptions& o) {
       }
       std::cout << "t = " << t << " s: " << e.file << " done\n";
     }
+    Csv cavity_csv("time [s],area [m^2],area [DL^2],points,first_x [m],first_y [m]");
+    if (post.wants(PostProduct::Cavity)) {
+      // Every frame of the series, not only the times asked for: a cavity opens and closes
+      // between them.
+      const WaterCavity cavity(spec);
+      for (const auto& e : series) {
+        clock.start();
+        const fs::path frame_file = run / e.file;
+        const CavityMeasure m = measure_cavity(cavity, read_frame_file(frame_file), frame_file);
+        cavity_csv.row({num(e.time), num(m.area), num(m.area / (spec.dl * spec.dl)),
+                        std::to_string(m.points), m.points ? num(m.first.x) : "",
+                        m.points ? num(m.first.y) : ""});
+        clock.stop("cavity");
+      }
+      std::cout << "cavity: " << series.size() << " frames done\n";
+    }
 
     auto write = [&](const char* name, const std::string& text, const char* what) {
       write_file_atomically(out / name, text);
@@ -335,6 +380,10 @@ int post_command(const PostOptions& o) {
     }
     if (post.wants(PostProduct::Lines)) {
       write("lines.csv", lines_csv.text, "pressure and velocity along lines between block points");
+    }
+    if (post.wants(PostProduct::Cavity)) {
+      write("cavity.csv", cavity_csv.text,
+            "area under the water farther than DL from every particle, at every frame");
     }
     nlohmann::json j;
     j["version"] = kVersion;

@@ -429,7 +429,8 @@ PostSpec read_post(TableReader& r, const CaseSpec& c) {
       {"sections", PostProduct::Sections},
       {"section_averages", PostProduct::SectionAverages},
       {"free_surface", PostProduct::FreeSurface},
-      {"lines", PostProduct::Lines}};
+      {"lines", PostProduct::Lines},
+      {"cavity", PostProduct::Cavity}};
   if (const toml::array* a = r.array("products")) {
     for (const auto& e : *a) {
       const auto name = e.value<std::string>();

@@ -105,7 +105,7 @@ struct SectionSpec {
 };
 
 /// What `wcmps post` computes from a run ([post]; nothing unless asked).
-enum class PostProduct { Grid, Sections, SectionAverages, FreeSurface, Lines };
+enum class PostProduct { Grid, Sections, SectionAverages, FreeSurface, Lines, Cavity };
 
 struct PostSpec {
   std::vector<PostProduct> products;
