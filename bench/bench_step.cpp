@@ -5,6 +5,8 @@
 //   flow with every phase busy); DL 2 mm gives about 20,000 particles.
 // - CaseI/DL_um/threads: the study's case I (cases/caseI) from t = 0 without settling, the
 //   block moving, from DL 7 mm (27,000 particles) to the fine 2 mm case (316,000).
+// - DamBreak_3a85288, CaseI_3a85288: the same with the scheme of commit 3a85288 (the cures of
+//   docs/method.md "A stabilised step" off), in the same binary: what the cures cost.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
@@ -36,10 +38,16 @@ namespace {
 
 using namespace wcmps;
 
-std::unique_ptr<Simulation> make(const std::string& case_dir, double dl) {
+std::unique_ptr<Simulation> make(const std::string& case_dir, double dl, bool old = false) {
   CaseSpec spec =
       parse_case_file(std::string(WCMPS_SOURCE_DIR) + "/cases/" + case_dir + "/case.toml");
   spec.dl = dl;
+  if (old) {
+    spec.negative_pressure = NegativePressure::Zero;
+    spec.number_density = NumberDensityScheme::Summation;
+    spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
+    spec.shifting = ShiftingScheme::None;
+  }
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
   auto sim = std::make_unique<Simulation>(spec, build_scene(spec));
@@ -47,10 +55,10 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl) {
   return sim;
 }
 
-void step(benchmark::State& state, const char* case_dir) {
+void step(benchmark::State& state, const char* case_dir, bool old = false) {
   const double dl = static_cast<double>(state.range(0)) * 1e-6;
   set_thread_count(static_cast<int>(state.range(1)));
-  const auto sim = make(case_dir, dl);
+  const auto sim = make(case_dir, dl, old);
   for (auto _ : state) sim->step(100.0);
   const auto particles = static_cast<double>(sim->particles().size());
   state.counters["particles"] = particles;
@@ -63,6 +71,12 @@ void DamBreak(benchmark::State& state) {
 }
 void CaseI(benchmark::State& state) {
   step(state, "caseI");
+}
+void DamBreak_3a85288(benchmark::State& state) {
+  step(state, "dambreak", true);
+}
+void CaseI_3a85288(benchmark::State& state) {
+  step(state, "caseI", true);
 }
 
 void NeighbourBuild(benchmark::State& state) {
@@ -99,6 +113,16 @@ BENCHMARK(DamBreak)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(CaseI)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{7000, 5000, 3500, 2500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_3a85288)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{10000, 5000, 3500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_3a85288)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{7000, 5000, 3500, 2500, 2000}, {1, 2}})
     ->Unit(benchmark::kMillisecond)

@@ -16,20 +16,30 @@ CASE = os.path.join(HERE, '..', 'cases', 'hydrostatic', 'case.toml')
 
 # (label, extra [physics] keys, [particles] initial_state)
 NO_COLLISION = {'wall_collision': '"none"'}
+# The cures of docs/method.md ("A stabilised step") off: the scheme of commit 3a85288.
+OLD = {'negative_pressure': '"zero"', 'number_density': '"summation"',
+       'free_surface': '"koshizuka1996"', 'shifting': '"none"'}
 VARIANTS = [
     ('study: Eq. 2.19, EOS walls, lattice start, alpha = 0',
      {'pressure_gradient': '"koshizuka1998-min"', 'wall_pressure': '"eos"',
-      'artificial_viscosity': '0.0', **NO_COLLISION}, 'lattice'),
+      'artificial_viscosity': '0.0', **NO_COLLISION, **OLD}, 'lattice'),
     ('+ walls extrapolated from the fluid',
      {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
-      **NO_COLLISION}, 'lattice'),
+      **NO_COLLISION, **OLD}, 'lattice'),
     ('+ hydrostatic start',
      {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
-      **NO_COLLISION}, 'hydrostatic'),
+      **NO_COLLISION, **OLD}, 'hydrostatic'),
     ('+ artificial viscosity 0.02',
-     {'pressure_gradient': '"koshizuka1998-min"', **NO_COLLISION}, 'hydrostatic'),
-    ('+ variational gradient', dict(NO_COLLISION), 'hydrostatic'),
-    ('+ wall collisions (the defaults)', {}, 'hydrostatic'),
+     {'pressure_gradient': '"koshizuka1998-min"', **NO_COLLISION, **OLD}, 'hydrostatic'),
+    ('+ variational gradient', dict(NO_COLLISION, **OLD), 'hydrostatic'),
+    ('+ wall collisions (the defaults of 3a85288)', dict(OLD), 'hydrostatic'),
+    ('+ continuity number density with diffusion',
+     dict(OLD, number_density='"continuity"'), 'hydrostatic'),
+    ('+ free surface by scan (Marrone 2010)',
+     dict(OLD, number_density='"continuity"', free_surface='"marrone2010"'), 'hydrostatic'),
+    ('+ negative pressure, tensile switch',
+     {'shifting': '"none"'}, 'hydrostatic'),
+    ('+ particle shifting (the defaults)', {}, 'hydrostatic'),
     ('defaults without artificial viscosity', {'artificial_viscosity': '0.0'}, 'hydrostatic'),
 ]
 
@@ -52,7 +62,13 @@ def speeds(path):
     v = vtk_to_numpy(pd.GetPointData().GetArray('velocity'))[kind == 0]
     s = (v[:, 0] ** 2 + v[:, 1] ** 2) ** 0.5
     t = pd.GetFieldData().GetArray('TimeValue').GetValue(0)
-    return t, math.sqrt((s ** 2).mean()), s.max()
+    # the pressure against rho g (H - y), H = 0.7 m, over the water deeper than 3 DL (the top
+    # rows are at p = 0 by construction), in % of rho g H
+    y = vtk_to_numpy(pd.GetPoints().GetData())[kind == 0][:, 1]
+    p = vtk_to_numpy(pd.GetPointData().GetArray('pressure'))[kind == 0]
+    deep = y < 0.7 - 0.03
+    e = (p[deep] - 1000.0 * 9.81 * (0.7 - y[deep])) / (1000.0 * 9.81 * 0.7)
+    return t, math.sqrt((s ** 2).mean()), s.max(), 100.0 * math.sqrt((e ** 2).mean())
 
 
 def run(args, k):
@@ -65,7 +81,7 @@ def run(args, k):
     p = subprocess.run([args.wcmps, 'run', case, '-o', os.path.join(d, 'run'), '--overwrite',
                         '--threads', '1'], capture_output=True, text=True)
     summary = json.load(open(os.path.join(d, 'run', 'run.json')))
-    frames = {round(t, 6): (rms, mx) for t, rms, mx in
+    frames = {round(t, 6): (rms, mx, pe) for t, rms, mx, pe in
               map(speeds, sorted(glob.glob(os.path.join(d, 'run', 'frame_*.vtp'))))}
     return label, p.returncode, summary, frames
 
@@ -79,8 +95,9 @@ def main():
     times = [t for t in (0.5, 1.0, 2.0, 4.0, 8.0) if t <= args.end + 1e-9]
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
         results = list(pool.map(lambda k: run(args, k), range(len(VARIANTS))))
-    print('| scheme | outcome | ' + ' | '.join('rms / max speed at %g s (m/s)' % t for t in times) + ' |')
-    print('|---|---|' + '---|' * len(times))
+    print('| scheme | outcome | ' + ' | '.join('rms / max speed at %g s (m/s)' % t for t in times) +
+          ' | p rms error at %g s (%% of rho g H) |' % times[-1])
+    print('|---|---|' + '---|' * (len(times) + 1))
     for label, code, summary, frames in results:
         if code == 0:
             outcome = 'ran to %g s' % summary['time']['simulated']
@@ -90,7 +107,9 @@ def main():
         cells = []
         for t in times:
             v = frames.get(round(t, 6))
-            cells.append('%.4f / %.3f' % v if v else '-')
+            cells.append('%.4f / %.3f' % v[:2] if v else '-')
+        v = frames.get(round(times[-1], 6))
+        cells.append('%.2f' % v[2] if v else '-')
         print('| %s | %s | %s |' % (label, outcome, ' | '.join(cells)))
 
 

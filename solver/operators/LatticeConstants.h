@@ -16,6 +16,16 @@ struct LatticeConstants {
   /// C = d n0 / sum_j (-W'(r_ij) r_ij): makes the variational pressure gradient exact for a
   /// linear field on the lattice (0.811565 at re = 3.5 DL; 1 only in the continuum limit).
   double gradient_correction = 0.0;
+  /// F0 = sum_j F(r_ij) of the concentration kernel F = q^3 (1 - 3q/4) (operators/DensitySums.h).
+  double concentration_sum = 0.0;
+  /// kappa: G of an interior particle of a lattice whose density varies along y, over
+  /// d(n/n0)/dy of that lattice (G, F: operators/DensitySums.h). Measured on a lattice of
+  /// graded row spacing (a strain gradient of 1e-4 per row): the response is not that of the
+  /// field C, because G moves one particle among neighbours spaced unevenly on both sides.
+  double concentration_response = 0.0;
+  /// S_F / 2 = sum_j (-F'(r_ij) r_ij) / 2: with it, (1 / (S_F / 2)) sum_j (phi_j - phi_i) F' e_ij
+  /// is the gradient of a linear field phi on the lattice.
+  double concentration_gradient_sum = 0.0;
 };
 
 /// Constants for an interior particle of a square lattice of spacing dl, kernel radius re.

@@ -101,10 +101,11 @@ class MpsOperators {
   ///
   /// with C from the lattice so that a linear p gives its exact gradient. Pair terms are
   /// antisymmetric (momentum conserved) and derive from a potential (energy conserved).
-  /// `p_over_n2` holds p / n^2 of every particle (boundary particles: p / n0^2).
+  /// `p_over_n2` holds p / n^2 of every particle (boundary particles: p / n0^2); `ti` stands for
+  /// p_i / n_i^2 in the pair terms (p_over_n2[i], or |p_over_n2[i]| under the tensile-instability
+  /// control of physics/NegativePressure_Sun2018.h).
   Vec2 gradient_variational(std::int64_t i, IdRange nb, const double* x, const double* y,
-                            const double* p_over_n2) const {
-    const double ti = p_over_n2[i];
+                            const double* p_over_n2, double ti) const {
     const double xi = x[i], yi = y[i];
     const std::int32_t* id = nb.first;
     double gx = 0.0, gy = 0.0;

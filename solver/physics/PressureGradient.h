@@ -4,6 +4,7 @@
 /// one by name from kPressureGradientSchemes; the phase is instantiated once per scheme through
 /// with_pressure_gradient(), so the per-particle loop has no branch or virtual call.
 
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 
@@ -49,16 +50,29 @@ struct PressureGradient_Koshizuka1996 {
 /// The variational pressure gradient of the summed number density (Suzuki, Koshizuka & Oka
 /// 2007, Comput. Methods Appl. Mech. Engrg. 196, 2876-2894; MpsOperators::gradient_variational):
 /// the pressure force is minus the derivative of the fluid's potential energy, so a particle
-/// system at rest cannot gain energy from it, and pair forces cancel.
+/// system at rest cannot gain energy from it, and pair forces cancel. kSwitch: the
+/// tensile-instability control of Sun et al. (2018) (physics/NegativePressure_Sun2018.h): a
+/// particle's own term p_i/n_i^2 taken as its absolute value, so that pairs do not attract where
+/// p_i < 0.
+template <bool kSwitch>
 struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
-  static Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
-                       const double* y, const double* p_over_n2) {
-    return ops.gradient_variational(i, nb, x, y, p_over_n2);
+  /// With the switch: particles it leaves out (1), the free-surface region (Sun et al. 2018).
+  const std::uint8_t* exempt = nullptr;
+
+  double own(const double* p_over_n2, std::int64_t i) const {
+    if constexpr (kSwitch) {
+      if (!(exempt && exempt[i])) return std::abs(p_over_n2[i]);
+    }
+    return p_over_n2[i];
   }
-  static Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange /*nb*/, IdRange part,
-                            const double* x, const double* y, const double* p_over_n2) {
-    return ops.gradient_variational(i, part, x, y, p_over_n2);
+  Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
+                const double* y, const double* p_over_n2) const {
+    return ops.gradient_variational(i, nb, x, y, p_over_n2, own(p_over_n2, i));
+  }
+  Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange /*nb*/, IdRange part,
+                     const double* x, const double* y, const double* p_over_n2) const {
+    return ops.gradient_variational(i, part, x, y, p_over_n2, own(p_over_n2, i));
   }
 };
 
@@ -73,14 +87,18 @@ inline constexpr SchemeEntry<PressureGradientScheme> kPressureGradientSchemes[] 
      "Suzuki, Koshizuka & Oka (2007), Comput. Methods Appl. Mech. Engrg. 196, 2876-2894"},
 };
 
-/// Calls f(Scheme{}) with the scheme type that `s` names.
+/// Calls f(Scheme{}) with the scheme type that `s` names; `tensile_switch` selects the
+/// variational gradient with the switch of Sun et al. (2018) (the other two have no own term to
+/// switch: they are unchanged).
 template <class F>
-decltype(auto) with_pressure_gradient(PressureGradientScheme s, F&& f) {
+decltype(auto) with_pressure_gradient(PressureGradientScheme s, bool tensile_switch,
+                                      const std::uint8_t* exempt, F&& f) {
   switch (s) {
     case PressureGradientScheme::Koshizuka1996:
       return f(PressureGradient_Koshizuka1996{});
     case PressureGradientScheme::Suzuki2007:
-      return f(PressureGradient_Suzuki2007{});
+      if (tensile_switch) return f(PressureGradient_Suzuki2007<true>{exempt});
+      return f(PressureGradient_Suzuki2007<false>{});
     case PressureGradientScheme::Koshizuka1998Min:
       break;
   }

@@ -1,11 +1,11 @@
 #pragma once
 /// @file Viscosity.h
 /// @brief Viscous accelerations of the prediction step (thesis Eq. 2.16). Each scheme gives
-/// its per-pair term; viscous_acceleration() sums both in one pass over the neighbours.
+/// its per-pair term; physics/PredictionSums.h sums them in the prediction's one pass over the
+/// neighbours (viscous_acceleration()).
 
 #include <cmath>
 #include <cstdint>
-#include <utility>
 
 #include "core/Vec2.h"
 #include "neighbours/NeighbourList.h"
@@ -48,57 +48,16 @@ struct ArtificialViscosity_Monaghan1992 {
   /// h^2 = (re/2)^2.
   static double pair_factor(double dx, double dy, double du, double dv, double r2, double w,
                             double h2) {
+    return pair_factor_over(dx, dy, du, dv, w, 1.0 / ((r2 + 0.01 * h2) * r2));
+  }
+  /// The same given inv = 1 / ((r^2 + 0.01 h^2) r^2), computed by the caller (who may share its
+  /// division with another term).
+  static double pair_factor_over(double dx, double dy, double du, double dv, double w, double inv) {
     // u_ij . r_ij = du . dr; receding pairs (>= 0) give nothing. Written without a branch:
     // the sign of a pair is unpredictable and a mispredicted branch costs more than the term.
     const double closing = ramp(-(du * dx + dv * dy));
-    return closing * w / ((r2 + 0.01 * h2) * r2);
+    return closing * w * inv;
   }
 };
-
-/// Sums over i's neighbours of the Laplacian viscosity's pair terms and, if kArtificial, of the
-/// artificial viscosity's. Pairs at r >= re add zero (W = 0); no branch, so the loop vectorises
-/// (the note of MpsOperators.h).
-template <bool kArtificial>
-std::pair<Vec2, Vec2> viscous_pair_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
-                                        const double* x, const double* y, const double* u,
-                                        const double* v) {
-  // Plain doubles and a copy of the kernel in the loop: with Vec2 and the kernel by reference
-  // GCC 12 leaves this loop scalar.
-  const Kernel w = kernel;
-  const double h2 = 0.25 * w.re * w.re;
-  const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
-  const std::int32_t* id = nb.first;
-  double lap_x = 0.0, lap_y = 0.0, q_x = 0.0, q_y = 0.0;
-#pragma omp simd reduction(+ : lap_x, lap_y, q_x, q_y)
-  for (std::int64_t k = 0; k < nb.size(); ++k) {
-    const std::int32_t j = id[k];
-    const double dx = x[j] - xi, dy = y[j] - yi;
-    const double r2 = dx * dx + dy * dy;
-    const double wij = w(std::sqrt(r2));
-    const double du = u[j] - ui, dv = v[j] - vi;
-    lap_x += Viscosity_Koshizuka1996Laplacian::pair(du, wij);
-    lap_y += Viscosity_Koshizuka1996Laplacian::pair(dv, wij);
-    if constexpr (kArtificial) {
-      const double f = ArtificialViscosity_Monaghan1992::pair_factor(dx, dy, du, dv, r2, wij, h2);
-      q_x += f * dx;
-      q_y += f * dy;
-    }
-  }
-  return {{lap_x, lap_y}, {q_x, q_y}};
-}
-
-/// Viscous acceleration of particle i: the Laplacian viscosity (if nu > 0) and the artificial
-/// viscosity (if alpha > 0), summed in one pass over the neighbours.
-inline Vec2 viscous_acceleration(const MpsOperators& ops,
-                                 const Viscosity_Koshizuka1996Laplacian& visc,
-                                 const ArtificialViscosity_Monaghan1992& art, std::int64_t i,
-                                 IdRange nb, const double* x, const double* y, const double* u,
-                                 const double* v) {
-  if (art.alpha > 0.0) {
-    const auto [lap, q] = viscous_pair_sums<true>(ops.kernel(), i, nb, x, y, u, v);
-    return lap * visc.scale(ops) + q * art.scale(ops);
-  }
-  return viscous_pair_sums<false>(ops.kernel(), i, nb, x, y, u, v).first * visc.scale(ops);
-}
 
 }  // namespace wcmps

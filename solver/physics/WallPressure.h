@@ -16,8 +16,16 @@
 ///
 ///       p_w = sum_f (p_f + rho0 g . (r_w - r_f)) W_wf / sum_f W_wf ,
 ///
-///   0 when no fluid particle is within re.
+///   0 when no fluid particle is within re. The hydrostatic term carries the fluid's pressure
+///   to the wall's depth; above the free surface (the wall at the waterline, over a film) it
+///   would carry it on into a tension that no fluid particle has, and that wall would suck the
+///   water up along itself. So p_w is held at or above min(0, min_f p_f): no lower than the
+///   lowest pressure of its fluid neighbours where the water is in tension (the suction over a
+///   body, which the wall must feel), and not below zero where it is not. Where negative fluid
+///   pressures are set to zero (negative_pressure = "zero") this is the old clamp of p_w at 0.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -39,7 +47,7 @@ struct WallPressure_Adami2012 {
                                         const double* y, const double* p, const ParticleKind* kind,
                                         const Kernel& kernel, double rho0, Vec2 g) {
     const double re2 = kernel.re * kernel.re;
-    double sum_w = 0.0, sum_pw = 0.0;
+    double sum_w = 0.0, sum_pw = 0.0, lowest = 0.0;
     for (const std::int32_t f : nb) {
       if (kind[f] != ParticleKind::Fluid) continue;
       const double dx = x[w] - x[f], dy = y[w] - y[f];
@@ -48,9 +56,10 @@ struct WallPressure_Adami2012 {
       const double wt = kernel(std::sqrt(r2));
       sum_w += wt;
       sum_pw += (p[f] + rho0 * (g.x * dx + g.y * dy)) * wt;
+      lowest = std::min(lowest, p[f]);
     }
     if (sum_w <= 0.0) return std::nullopt;
-    return sum_pw / sum_w;
+    return std::max(sum_pw / sum_w, lowest);
   }
 };
 

@@ -609,9 +609,19 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                                         r.choice("wall_collision", collisions.front(), collisions));
     c.collision_distance = r.number("collision_distance", 0.8, 0.5, 1.0, true, true);
     c.collision_restitution = r.number("collision_restitution", 0.2, 0.0, 1.0);
-    c.negative_pressure = r.choice("negative_pressure", "zero", {"zero", "keep"}) == "zero"
-                              ? NegativePressure::Zero
-                              : NegativePressure::Keep;
+    // A scheme by its key; absent, the CaseSpec's default (`value` as constructed).
+    const auto pick = [&](const auto& table, const std::string& key, auto value) {
+      return *scheme_from_key(
+          table, r.choice(key, std::string(scheme_key(table, value)), scheme_keys(table)));
+    };
+    c.negative_pressure = pick(kNegativePressureSchemes, "negative_pressure", c.negative_pressure);
+    c.pressure_floor = r.number("pressure_floor", c.pressure_floor, -kInf, 0.0);
+    c.number_density = pick(kNumberDensitySchemes, "number_density", c.number_density);
+    c.density_diffusion = r.number("density_diffusion", c.density_diffusion, 0.0, 1.0);
+    c.density_diffusion_scheme =
+        pick(kDensityDiffusionSchemes, "density_diffusion_scheme", c.density_diffusion_scheme);
+    c.free_surface = pick(kFreeSurfaceSchemes, "free_surface", c.free_surface);
+    c.shifting = pick(kShiftingSchemes, "shifting", c.shifting);
     r.finish();
   }
   {

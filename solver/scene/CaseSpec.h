@@ -14,6 +14,10 @@
 #include "core/Vec2.h"
 #include "particles/Fields.h"
 #include "particles/ParticleKind.h"
+#include "physics/FreeSurface_Marrone2010.h"
+#include "physics/NegativePressure_Sun2018.h"
+#include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PressureGradient.h"
 #include "physics/TimeStep.h"
 #include "physics/WallCollision.h"
@@ -142,8 +146,6 @@ struct FiguresSpec {
   std::string measured_profiles;  ///< time [s], section, Y [-], u_along [m/s], u_normal [m/s]
 };
 
-enum class NegativePressure { Zero, Keep };
-
 struct CaseSpec {
   // [case]
   std::string name = "case";
@@ -177,7 +179,13 @@ struct CaseSpec {
   double artificial_viscosity = 0.02;   ///< Monaghan alpha (-); 0 = off
   double surface_threshold = 0.97;      ///< beta
   PressureGradientScheme pressure_gradient = PressureGradientScheme::Suzuki2007;
-  NegativePressure negative_pressure = NegativePressure::Zero;
+  NegativePressure negative_pressure = NegativePressure::Sun2018Switch;
+  double pressure_floor = -99.0e3;  ///< Pa: the lowest pressure kept (vapour pressure, 1 atm)
+  NumberDensityScheme number_density = NumberDensityScheme::Continuity;
+  double density_diffusion = 0.1;  ///< delta of the diffusive term (-), continuity only
+  DensityDiffusionScheme density_diffusion_scheme = DensityDiffusionScheme::Fourtakas2019;
+  FreeSurfaceScheme free_surface = FreeSurfaceScheme::Marrone2010;
+  ShiftingScheme shifting = ShiftingScheme::Sun2017;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide

@@ -62,7 +62,32 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       artificial_viscosity_{spec.artificial_viscosity, scene_.sound_speed},
       gradient_scheme_(spec.pressure_gradient),
       wall_scheme_(spec.wall_pressure),
-      zero_negative_pressure_(spec.negative_pressure == NegativePressure::Zero),
+      pressure_bound_(PressureBound::make(spec.negative_pressure, spec.pressure_floor)),
+      tensile_switch_(spec.negative_pressure == NegativePressure::Sun2018Switch),
+      density_scheme_(spec.number_density),
+      continuity_(NumberDensity_Jandaghian2020::make(spec.density_diffusion, spec.re(),
+                                                     scene_.sound_speed, scene_.lattice.lambda,
+                                                     scene_.lattice.n0)),
+      sums_setup_{
+          Kernel(spec.re()), 1.0 / scene_.lattice.concentration_sum,
+          spec.shifting != ShiftingScheme::None ? ParticleShifting_Sun2017::kClumpingR : 0.0,
+          1.0 / Kernel(spec.re())(spec.dl)},
+      density_inputs_{
+          nullptr,
+          scene_.particles.fluid_begin(),
+          spec.density_diffusion_scheme == DensityDiffusionScheme::Fourtakas2019
+              ? spec.gravity * (scene_.lattice.n0 / (scene_.sound_speed * scene_.sound_speed))
+              : Vec2{},
+          sums_setup_.inv_f0,
+          sums_setup_.clumping_r,
+          sums_setup_.inv_w_dl,
+          2.0 * scene_.lattice.concentration_response * scene_.lattice.concentration_sum /
+              (2.0 * scene_.lattice.concentration_gradient_sum * scene_.lattice.n0),
+          spec.gravity * (scene_.lattice.n0 / (scene_.sound_speed * scene_.sound_speed))},
+      surface_scheme_(spec.free_surface),
+      scan_{spec.surface_threshold, scene_.lattice.n0, 0.5 * spec.re()},
+      shifting_scheme_(spec.shifting),
+      shifting_{0.5 * spec.re()},
       collision_scheme_(spec.wall_collision),
       collision_{spec.collision_distance * spec.dl, spec.collision_restitution},
       gravity_(spec.gravity),
@@ -83,6 +108,19 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   y_built_.resize(ps.size());
   p_over_n2_.resize(ps.size());
   near_wall_.resize(ps.size());
+  if (density_scheme_ == NumberDensityScheme::Continuity) n_sum_.resize(ps.size());
+  if (surface_scheme_ == FreeSurfaceScheme::Marrone2010 ||
+      shifting_scheme_ != ShiftingScheme::None) {
+    grad_x_.resize(ps.size());
+    grad_y_.resize(ps.size());
+  }
+  if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
+  if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_) {
+    band_x_.resize(ps.size());
+    band_y_.resize(ps.size());
+    in_band_.resize(ps.size());
+    band_.reserve(static_cast<std::size_t>(ps.fluid_count()));
+  }
   max_speed_ = root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     return sq(ps.now.u[i]) + sq(ps.now.v[i]);
   }));
@@ -102,16 +140,25 @@ void Simulation::compute_initial_pressure() {
   // lists has reordered the fluid particles of `now`).
   ParticleSet& ps = scene_.particles;
   rebuild_neighbours();
+  if (density_scheme_ == NumberDensityScheme::Continuity) {
+    // The evolved n starts from the state the scene was built in, not from the sum (whose
+    // kernels are incomplete at the surface and against the walls).
+    const double n0 = ops_.n0();
+    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+      ps.now.n[i] = n0 * scene_.fluid_density_ratio[ps.id[i] - ps.fluid_begin()];
+    }
+  }
   ps.next = ps.now;
+  if (density_scheme_ == NumberDensityScheme::Continuity) predict(0.0);  // n, G of the start
   compute_number_density();
   compute_pressure();
   ps.now.p = ps.next.p;
   ps.now.n = ps.next.n;
   ps.now.surface = ps.next.surface;
   if (body_) {
-    with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
+    with_pressure_gradient(gradient_scheme_, tensile_switch_, switch_exempt(), [&](auto scheme) {
       using Scheme = decltype(scheme);
-      body_->commit(body_->state(), body_force<Scheme>(gradient_input<Scheme>()));
+      body_->commit(body_->state(), body_force(scheme, gradient_input<Scheme>()));
     });
   }
   pairs_visited_ = 0;
@@ -157,7 +204,7 @@ const double* Simulation::gradient_input() {
 }
 
 template <class Scheme>
-BodyForce Simulation::body_force(const double* input) {
+BodyForce Simulation::body_force(const Scheme& scheme, const double* input) {
   // Fluid particle i gets -grad p / rho and the viscous acceleration from the body's particles
   // (the part of its sums over them); the body gets minus that times i's mass rho DL^2.
   const ParticleSet& ps = scene_.particles;
@@ -173,7 +220,7 @@ BodyForce Simulation::body_force(const double* input) {
       if (in_body(j)) part.push_back(j);
     }
     const IdRange of_body{part.data(), part.data() + part.size()};
-    gradient += Scheme::gradient_part(ops_, i, nb, of_body, t.x.data(), t.y.data(), input);
+    gradient += scheme.gradient_part(ops_, i, nb, of_body, t.x.data(), t.y.data(), input);
     if (viscous) {
       acceleration += viscous_acceleration(ops_, viscosity_, artificial_viscosity_, i, of_body,
                                            s.x.data(), s.y.data(), s.u.data(), s.v.data());
@@ -371,48 +418,131 @@ void Simulation::predict(double dt) {
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
   const bool viscous = viscosity_.nu > 0.0 || artificial_viscosity_.alpha > 0.0;
-  star_drift_ = root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-    Vec2 a = gravity_;
-    if (viscous) {
-      a += viscous_acceleration(ops_, viscosity_, artificial_viscosity_, i, neighbours_.of(i),
-                                s.x.data(), s.y.data(), s.u.data(), s.v.data());
-    }
-    t.u[i] = s.u[i] + dt * a.x;
-    t.v[i] = s.v[i] + dt * a.y;
-    t.x[i] = s.x[i] + dt * t.u[i];
-    t.y[i] = s.y[i] + dt * t.v[i];
-    return sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]);
-  }));
+  // An evolved number density takes all its sums at (r^n, u^n) here, in the same pass as the
+  // viscosity (physics/PredictionSums.h): its rate and diffusion, and the summed n and G that the
+  // free-surface scan and the shifting read. The rate takes u^n, the velocity the particles moved
+  // with in the last step, not u*: u* holds this step's g dt, which the pressure correction takes
+  // out again, and against a wall it would read as a compression every step (in still water the
+  // mean pressure then climbs by 290 Pa in 7 s). n then leads the momentum update as in
+  // symplectic Euler.
+  const bool evolved = density_scheme_ == NumberDensityScheme::Continuity;
+  DensityInputs density = density_inputs_;
+  density.n = s.n.data();
+  const double lap_scale = viscosity_.scale(ops_), q_scale = artificial_viscosity_.scale(ops_);
+  const auto pass = [&](auto kPairs, auto kArtificial, auto kDensity) {
+    return root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+      Vec2 a = gravity_;
+      if constexpr (kPairs) {
+        const PredictionSums p =
+            prediction_sums<kArtificial, kDensity>(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
+                                                   s.y.data(), s.u.data(), s.v.data(), density);
+        a += p.lap * lap_scale;
+        if constexpr (kArtificial) a += p.q * q_scale;
+        if constexpr (kDensity) {
+          t.n[i] = continuity_.advance(s.n[i], p.rate, p.lapl, dt);
+          n_sum_[i] = p.n;
+          grad_x_[i] = p.gradient.x;
+          grad_y_[i] = p.gradient.y;
+        }
+      }
+      t.u[i] = s.u[i] + dt * a.x;
+      t.v[i] = s.v[i] + dt * a.y;
+      t.x[i] = s.x[i] + dt * t.u[i];
+      t.y[i] = s.y[i] + dt * t.v[i];
+      return sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]);
+    }));
+  };
+  using Yes = std::true_type;
+  using No = std::false_type;
+  const bool artificial = artificial_viscosity_.alpha > 0.0;
+  if (!viscous && !evolved) {
+    star_drift_ = pass(No{}, No{}, No{});
+  } else if (artificial) {
+    star_drift_ = evolved ? pass(Yes{}, Yes{}, Yes{}) : pass(Yes{}, Yes{}, No{});
+  } else {
+    star_drift_ = evolved ? pass(Yes{}, No{}, Yes{}) : pass(Yes{}, No{}, No{});
+  }
   if (body_) star_drift_ = std::max(star_drift_, body_drift(body_next_.s));
-  if (viscous) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
+  if (viscous || evolved) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
 void Simulation::compute_number_density() {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
-  for (const auto& [b, e] : list_owners_) {
-    parallel_for(b, e, [&](std::int64_t i) {
-      t.n[i] = ops_.number_density(i, neighbours_.of(i), t.x.data(), t.y.data());
-    });
-    pairs_visited_ += neighbours_.pair_count(b, e);
-  }
+  const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
+  const bool gradient = scan || shifting_scheme_ != ShiftingScheme::None;
+  // Where the particles' positions are read for the surface: r^n under an evolved n (the
+  // prediction summed the fluid's n and G there), r* under the summed n (Eq. 2.17).
+  const ParticleState& at = surface_positions();
+  // Wall particles: their summed n (the "eos" wall pressure, the frames) and, for the surface
+  // scan, its gradient (which of them are wet).
+  parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+    const IdRange nb = neighbours_.of(w);
+    if (scan) {
+      const DensitySums d = density_sums<true>(sums_setup_, w, nb, at.x.data(), at.y.data());
+      t.n[w] = d.n;
+      grad_x_[w] = d.gradient.x;
+      grad_y_[w] = d.gradient.y;
+    } else {
+      t.n[w] = ops_.number_density(w, nb, at.x.data(), at.y.data());
+    }
+  });
+  pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
+  if (density_scheme_ == NumberDensityScheme::Continuity) return;  // summed in the prediction
+  // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    const IdRange nb = neighbours_.of(i);
+    if (gradient) {
+      const DensitySums d = density_sums<true>(sums_setup_, i, nb, t.x.data(), t.y.data());
+      t.n[i] = d.n;
+      grad_x_[i] = d.gradient.x;
+      grad_y_[i] = d.gradient.y;
+    } else {
+      t.n[i] = ops_.number_density(i, nb, t.x.data(), t.y.data());
+    }
+  });
+  pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
 void Simulation::compute_pressure() {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
-  // Free surface (Eq. 2.10) or equation of state (Eq. 2.9), for fluid particles and, with the
-  // "eos" wall scheme, for wall particles.
-  auto from_number_density = [&](std::int64_t i) {
-    const bool on_surface = surface_.is_surface(t.n[i]);
-    double p = on_surface ? 0.0 : eos_.pressure(t.n[i]);
-    if (zero_negative_pressure_ && p < 0.0) p = 0.0;
-    t.p[i] = p;
-    t.surface[i] = on_surface ? 1 : 0;
+  // Free surface (Eq. 2.10, or the scan of Marrone et al. 2010) and equation of state (Eq. 2.9)
+  // for fluid particles; the bound of negative pressures (physics/NegativePressure_Sun2018.h).
+  // The free surface carries no tension. With the summed n its particles' kernels are
+  // incomplete and their equation of state meaningless: p = 0 (Eq. 2.10). An evolved n is the
+  // particle's own: a surface particle keeps its pressure where it is compressed (the top row
+  // under the weight of nothing but itself, a jet striking a wall) and is held at 0 below it;
+  // forced to 0 it would offer no resistance to the rows under it, which crowd into the surface
+  // (still water: two particles per DL in the top row after 1.7 s, then a blow-up).
+  const bool evolved = density_scheme_ == NumberDensityScheme::Continuity;
+  const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
+  const std::int64_t fluid = ps.fluid_begin();
+  if (scan) {
+    // Which wall particles are wet: only those fill a fluid particle's scan region.
+    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+      wet_[w] = !scan_.is_dry(w, neighbours_.of(w), t.x.data(), t.y.data(), t.n[w],
+                              {grad_x_[w], grad_y_[w]}, [&](std::int32_t j) { return j >= fluid; });
+    });
+  }
+  const auto fills = [&](std::int32_t j) {
+    return j >= fluid || wet_[j < ps.wall_end() ? j : ps.ghost_source(j)];
   };
-  parallel_for(ps.fluid_begin(), ps.size(), from_number_density);
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    const bool on_surface = scan ? scan_.is_surface(i, neighbours_.of(i), t.x.data(), t.y.data(),
+                                                    summed_n(i), {grad_x_[i], grad_y_[i]}, fills)
+                                 : surface_.is_surface(summed_n(i));
+    const double p = eos_.pressure(t.n[i]);
+    t.p[i] = !on_surface ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
+    t.surface[i] = on_surface ? 1 : 0;
+  });
   if (wall_scheme_ == WallPressureScheme::Eos) {
-    parallel_for(0, ps.wall_end(), from_number_density);
+    // The wall particle as a fluid particle of its own summed n (Shakibaeinia & Jin 2010).
+    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+      const bool on_surface = surface_.is_surface(t.n[w]);
+      t.p[w] = on_surface ? 0.0 : pressure_bound_(eos_.pressure(t.n[w]));
+      t.surface[w] = on_surface ? 1 : 0;
+    });
   } else {
     // A moving wall's particles feel g - a (Adami et al. 2012, Eq. 27).
     const IndexRange body = body_ ? body_->particles().walls : IndexRange{0, 0};
@@ -422,9 +552,7 @@ void Simulation::compute_pressure() {
       const auto p =
           WallPressure_Adami2012::pressure(w, neighbours_.of(w), t.x.data(), t.y.data(), t.p.data(),
                                            ps.kind.data(), ops_.kernel(), density_, g);
-      double pw = p.value_or(0.0);
-      if (zero_negative_pressure_ && pw < 0.0) pw = 0.0;
-      t.p[w] = pw;
+      t.p[w] = pressure_bound_(p.value_or(0.0));
       t.surface[w] = p ? 0 : 1;
     });
     pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
@@ -432,13 +560,53 @@ void Simulation::compute_pressure() {
   // Ghost particles: the pressure of their wall particle along the wall normal (section 2.6).
   parallel_for(ps.wall_end(), ps.fluid_begin(),
                [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
+  if (!band_x_.empty()) find_surface_band();
+}
+
+void Simulation::find_surface_band() {
+  // The free-surface band: the surface particles and the fluid particles within re of one (the
+  // region that the tensile-instability switch leaves out, and where the shifting moves particles
+  // along the surface only). Each gets the kernel-weighted sum of the surface normals
+  // -G_s/|G_s| near it (its own with W(0) = 1), the normal of the shifting's projection
+  // (physics/ParticleShifting_Sun2017.h). Serial: surface particles are a thin band, a few per
+  // cent of the fluid, and the sums into a particle must not race.
+  const ParticleSet& ps = scene_.particles;
+  const ParticleState& t = ps.next;
+  const ParticleState& at = surface_positions();
+  for (const std::int32_t j : band_) {
+    band_x_[j] = band_y_[j] = 0.0;
+    in_band_[j] = 0;
+  }
+  band_.clear();
+  const Kernel& w = ops_.kernel();
+  const double re2 = ops_.re() * ops_.re();
+  auto add = [&](std::int64_t j, double weight, Vec2 nu) {
+    if (!in_band_[j]) {
+      in_band_[j] = 1;
+      band_.push_back(static_cast<std::int32_t>(j));
+    }
+    band_x_[j] += weight * nu.x;
+    band_y_[j] += weight * nu.y;
+  };
+  for (std::int64_t s = ps.fluid_begin(); s < ps.size(); ++s) {
+    if (!t.surface[s]) continue;
+    const double g = std::hypot(grad_x_[s], grad_y_[s]);
+    if (!(g > 0.0)) continue;  // a lone particle: no neighbours to project
+    const Vec2 nu{-grad_x_[s] / g, -grad_y_[s] / g};
+    add(s, 1.0, nu);
+    for (const std::int32_t j : neighbours_.of(s)) {
+      if (j < ps.fluid_begin()) continue;
+      const double r2 = sq(at.x[j] - at.x[s]) + sq(at.y[j] - at.y[s]);
+      if (r2 < re2) add(j, w(std::sqrt(r2)), nu);
+    }
+  }
 }
 
 void Simulation::correct(double dt) {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   const double c = -dt / density_;
-  with_pressure_gradient(gradient_scheme_, [&](auto scheme) {
+  with_pressure_gradient(gradient_scheme_, tensile_switch_, switch_exempt(), [&](auto scheme) {
     using Scheme = decltype(scheme);
     const double* input = gradient_input<Scheme>();
     // The wall collisions of i need only its corrected velocity and the boundary particles'
@@ -446,13 +614,13 @@ void Simulation::correct(double dt) {
     const bool collide = collision_scheme_ != WallCollisionScheme::None;
     next_collisions_ = parallel_count(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
       const IdRange nb = neighbours_.of(i);
-      const Vec2 g = Scheme::gradient(ops_, i, nb, t.x.data(), t.y.data(), input);
+      const Vec2 g = scheme.gradient(ops_, i, nb, t.x.data(), t.y.data(), input);
       t.u[i] += c * g.x;
       t.v[i] += c * g.y;
       return collide && collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
                                          ps.kind.data()) > 0;
     });
-    if (body_) body_force_next_ = body_force<Scheme>(input);
+    if (body_) body_force_next_ = body_force(scheme, input);
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
@@ -461,9 +629,22 @@ void Simulation::move(double dt) {
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
+  const bool shift = shifting_scheme_ != ShiftingScheme::None;
+  const double umax = max_speed_;
   const auto [speed, drift] = parallel_max2(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     t.x[i] = s.x[i] + dt * t.u[i];
     t.y[i] = s.y[i] + dt * t.v[i];
+    if (shift) {
+      // Along the surface only in its band (the band's normal sum, normalised).
+      Vec2 nu;
+      if (in_band_[i]) {
+        const double b = std::hypot(band_x_[i], band_y_[i]);
+        if (b > 0.0) nu = {band_x_[i] / b, band_y_[i] / b};
+      }
+      const Vec2 dr = shifting_.shift({grad_x_[i], grad_y_[i]}, umax, dt, nu);
+      t.x[i] += dr.x;
+      t.y[i] += dr.y;
+    }
     return std::make_pair(sq(t.u[i]) + sq(t.v[i]),
                           sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]));
   });

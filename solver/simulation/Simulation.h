@@ -10,9 +10,15 @@
 
 #include "neighbours/CellGrid.h"
 #include "neighbours/NeighbourList.h"
+#include "operators/DensitySums.h"
 #include "operators/MpsOperators.h"
 #include "physics/EquationOfState.h"
 #include "physics/FreeSurface.h"
+#include "physics/FreeSurface_Marrone2010.h"
+#include "physics/NegativePressure_Sun2018.h"
+#include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleShifting_Sun2017.h"
+#include "physics/PredictionSums.h"
 #include "physics/PressureGradient.h"
 #include "physics/TimeStep.h"
 #include "physics/Viscosity.h"
@@ -96,19 +102,34 @@ class Simulation {
   void rebuild_neighbours();          // cell grid + lists, reordering now and then
   void move_body(double dt);          // the body to t^{n+1}: its law or its dynamics
   void predict(double dt);            // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
-  void compute_number_density();      // n* at r* (Eq. 2.17)
-  void compute_pressure();            // EOS, free surface, walls, ghosts (Eq. 2.9, 2.10)
+  void compute_number_density();      // n* at r* (Eq. 2.17); walls
+  void compute_pressure();            // free surface, EOS, walls, ghosts (Eq. 2.9, 2.10)
   void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19),
                                       // then wall collisions (Koshizuka 1998)
-  void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20)
+  void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20), + shifting
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
   void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
+  void find_surface_band();           // the surface's band and its normals
+  /// The positions the free surface is found at: r^n where the number density is evolved (the
+  /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
+  const ParticleState& surface_positions() const {
+    return density_scheme_ == NumberDensityScheme::Continuity ? scene_.particles.now
+                                                              : scene_.particles.next;
+  }
+  /// The summed number density of fluid particle i at those positions (t.n itself where
+  /// summation gives n).
+  double summed_n(std::int64_t i) const {
+    return density_scheme_ == NumberDensityScheme::Continuity ? n_sum_[i]
+                                                              : scene_.particles.next.n[i];
+  }
   template <class Scheme>
   const double* gradient_input();  // p, or p/n^2 for the variational gradient
   template <class Scheme>
-  BodyForce body_force(const double* input);  // reaction of the body's pair forces
+  BodyForce body_force(const Scheme& scheme, const double* input);  // reaction of pair forces
+  /// Particles the tensile-instability switch leaves out: the free-surface band.
+  const std::uint8_t* switch_exempt() const { return tensile_switch_ ? in_band_.data() : nullptr; }
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();
     return (j >= b.walls.first && j < b.walls.second) ||
@@ -124,7 +145,16 @@ class Simulation {
   ArtificialViscosity_Monaghan1992 artificial_viscosity_;
   PressureGradientScheme gradient_scheme_;
   WallPressureScheme wall_scheme_;
-  bool zero_negative_pressure_;
+  PressureBound pressure_bound_;
+  bool tensile_switch_;
+  NumberDensityScheme density_scheme_;
+  NumberDensity_Jandaghian2020 continuity_;
+  DensitySumsSetup sums_setup_;
+  DensityInputs density_inputs_;  // of the prediction's pass (its n set at each step)
+  FreeSurfaceScheme surface_scheme_;
+  FreeSurface_Marrone2010 scan_;
+  ShiftingScheme shifting_scheme_;
+  ParticleShifting_Sun2017 shifting_;
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
   TimeStepRule rule_, settle_rule_;
@@ -142,6 +172,14 @@ class Simulation {
   std::vector<double> x_built_, y_built_;  // positions at the last build of the lists
   std::vector<double> p_over_n2_;          // input of the variational gradient
   std::vector<std::uint8_t> near_wall_;    // 1: boundary particles in its list (check_stability)
+  // Of the step in progress, sized only for the schemes that use them: the summed n (under the
+  // continuity scheme), G = grad(n/n0) (free-surface scan, shifting), and the surface band (the
+  // particles within re of a surface particle, listed in band_, for the tensile switch and the
+  // shifting) with its normals.
+  std::vector<double> n_sum_, grad_x_, grad_y_, band_x_, band_y_;
+  std::vector<std::int32_t> band_;
+  std::vector<std::uint8_t> in_band_;
+  std::vector<std::uint8_t> wet_;  // wall particles with water in front of them (surface scan)
 
   double time_ = 0.0;
   std::int64_t steps_ = 0;

@@ -49,6 +49,9 @@ TEST(Simulation, FluidWithoutForcesMovesUniformly) {
   spec.hydrostatic_start = false;
   spec.fluids[0].polygon = {{0.05, 0.1}, {0.15, 0.1}, {0.15, 0.15}, {0.05, 0.15}};
   spec.fluids[0].velocity = {0.3, -0.2};
+  // Shifting is not a force, and its coefficient scales with |u|max (Sun et al. 2017), not with
+  // the flow's deformation: it moves the corner particles of this free block along its surface.
+  spec.shifting = ShiftingScheme::None;
   Simulation sim(spec, build_scene(spec));
   // Start positions by particle id (fluid particles are reordered by cell as they move).
   std::vector<Vec2> start(sim.particles().size());
@@ -177,9 +180,12 @@ TEST(Stability, AParticleThroughAWallIsReported) {
 
 /// A lone particle thrown at the bottom at 2 m/s, with nothing else acting on it: no gravity,
 /// no viscosity, and zero pressure (it is on the free surface, and walls extrapolate zero from
-/// it). Only the wall collision model can stop it.
+/// it). Only the wall collision model can stop it. Zero pressure needs the summed number
+/// density: an evolved one rises as the particle closes on the wall, and that pressure alone
+/// turns it back (with the default schemes it leaves at 2.02 m/s, having never collided).
 CaseSpec lone_particle_at_the_bottom() {
   CaseSpec spec = minimal();
+  spec.number_density = NumberDensityScheme::Summation;
   spec.gravity = {0.0, 0.0};
   spec.sound_speed = 20.0;
   spec.kinematic_viscosity = 0.0;

@@ -1,0 +1,401 @@
+// The cures of the stabilised scheme, each on a particle arrangement whose answer is known: the
+// density sums and the continuity update, the density diffusion with and without its
+// hydrostatic correction, the free-surface scan, the shifting and its surface projection, the
+// tensile-instability switch and the pressure bound.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "neighbours/CellGrid.h"
+#include "neighbours/NeighbourList.h"
+#include "operators/DensitySums.h"
+#include "operators/LatticeConstants.h"
+#include "operators/MpsOperators.h"
+#include "physics/FreeSurface.h"
+#include "physics/FreeSurface_Marrone2010.h"
+#include "physics/NegativePressure_Sun2018.h"
+#include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleShifting_Sun2017.h"
+#include "physics/PredictionSums.h"
+#include "physics/PressureGradient.h"
+
+namespace wcmps {
+namespace {
+
+constexpr double kDl = 0.01;
+constexpr double kRe = 3.5 * kDl;
+
+/// Particles at given positions (all "fluid" unless fluid_begin says otherwise), with neighbour
+/// lists at re + 0.2 DL.
+struct Cloud {
+  std::vector<double> x, y, u, v, n;
+  CellGrid grid;
+  NeighbourList list;
+
+  void add(double px, double py) {
+    x.push_back(px);
+    y.push_back(py);
+  }
+  std::int64_t size() const { return static_cast<std::int64_t>(x.size()); }
+  void build() {
+    const auto count = size();
+    u.assign(count, 0.0);
+    v.assign(count, 0.0);
+    n.assign(count, 0.0);
+    double lo_x = x[0], lo_y = y[0], hi_x = x[0], hi_y = y[0];
+    for (std::int64_t k = 0; k < count; ++k) {
+      lo_x = std::min(lo_x, x[k]), lo_y = std::min(lo_y, y[k]);
+      hi_x = std::max(hi_x, x[k]), hi_y = std::max(hi_y, y[k]);
+    }
+    const double cutoff = kRe + 0.2 * kDl;
+    grid.configure({lo_x - kDl, lo_y - kDl}, {hi_x + kDl, hi_y + kDl}, cutoff);
+    grid.bin(x.data(), y.data(), count);
+    list.build(grid, x.data(), y.data(), count, cutoff, {{0, count}});
+  }
+};
+
+/// A block of nx x ny lattice particles with its lower left particle at (0, 0).
+Cloud block(int nx, int ny, double jitter = 0.0, unsigned seed = 1) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-jitter, jitter);
+  Cloud c;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) c.add(i * kDl + d(rng) * kDl, j * kDl + d(rng) * kDl);
+  }
+  c.build();
+  return c;
+}
+
+const LatticeConstants& lattice() {
+  static const LatticeConstants c = square_lattice_constants(kDl, kRe);
+  return c;
+}
+
+/// The constants of G, with the anti-clumping weight of the shifting (R = 0.2) or without.
+DensitySumsSetup setup(bool clumping = true) {
+  return {Kernel(kRe), 1.0 / lattice().concentration_sum,
+          clumping ? ParticleShifting_Sun2017::kClumpingR : 0.0, 1.0 / Kernel(kRe)(kDl)};
+}
+
+/// n and G at the cloud's positions, as the summed-density path takes them.
+DensitySums summed(const Cloud& c, std::int64_t i, bool clumping = true) {
+  return density_sums<true>(setup(clumping), i, c.list.of(i), c.x.data(), c.y.data());
+}
+
+/// The evolved density's sums of the prediction's pass (no viscosity terms read), with the
+/// cloud's n, its fluid from fluid_begin on, h, and boundary particles carrying n0 g / c0^2.
+PredictionSums predicted(const Cloud& c, std::int64_t i, std::int64_t fluid_begin = 0,
+                         Vec2 hydrostatic = {}, bool clumping = true, Vec2 carried = {}) {
+  const DensitySumsSetup g = setup(clumping);
+  const auto& l = lattice();
+  const double b = 2.0 * l.concentration_response * l.concentration_sum /
+                   (2.0 * l.concentration_gradient_sum * l.n0);
+  const DensityInputs d{c.n.data(),   fluid_begin, hydrostatic, g.inv_f0,
+                        g.clumping_r, g.inv_w_dl,  b,           carried};
+  return prediction_sums<false, true>(Kernel(kRe), i, c.list.of(i), c.x.data(), c.y.data(),
+                                      c.u.data(), c.v.data(), d);
+}
+
+/// Index of lattice particle (i, j) of a block nx wide.
+std::int64_t at(int i, int j, int nx) {
+  return static_cast<std::int64_t>(j) * nx + i;
+}
+
+TEST(DensitySums, OnTheLatticeAtRest) {
+  Cloud c = block(15, 15);
+  std::fill(c.n.begin(), c.n.end(), lattice().n0);
+  const auto i = at(7, 7, 15);
+  const PredictionSums d = predicted(c, i);
+  // Sums of ~40 terms of order 1: rounding.
+  EXPECT_NEAR(d.n, lattice().n0, 1e-12);
+  EXPECT_NEAR(d.gradient.x, 0.0, 1e-10);
+  EXPECT_NEAR(d.gradient.y, 0.0, 1e-10);
+  EXPECT_EQ(d.rate, 0.0);
+  EXPECT_NEAR(d.lapl, 0.0, 1e-12);
+}
+
+TEST(DensitySums, BothPassesGiveTheSameNAndG) {
+  // The summed-density path (at r*) and the evolved-density path (the prediction's pass at
+  // r^n) write the same sums with their pair vectors the other way round.
+  const Cloud c = block(15, 15, 0.2);
+  for (const std::int64_t i : {at(7, 7, 15), at(3, 14, 15), at(0, 0, 15)}) {
+    const DensitySums a = summed(c, i);
+    const PredictionSums b = predicted(c, i);
+    EXPECT_NEAR(a.n, b.n, 1e-12);
+    EXPECT_NEAR(a.gradient.x, b.gradient.x, 1e-9);  // |G| ~ 10 /m
+    EXPECT_NEAR(a.gradient.y, b.gradient.y, 1e-9);
+  }
+}
+
+TEST(DensitySums, TheRateIsTheTimeDerivativeOfTheSum) {
+  // A jittered block in a shearing, compressing flow: R is dn/dt of the summed n, which a
+  // central difference of the sums at r -+ dt u measures to O(dt^2).
+  Cloud c = block(15, 15, 0.2);
+  for (std::int64_t k = 0; k < c.size(); ++k) {
+    c.u[k] = 0.3 * c.y[k] - 0.8 * c.x[k] + 0.05;
+    c.v[k] = -0.4 * c.x[k] + 0.6 * c.y[k];
+  }
+  const auto i = at(7, 7, 15);
+  const double rate = predicted(c, i).rate;
+  const double dt = 1e-6;
+  auto summed_at = [&](double s) {
+    Cloud m = c;
+    for (std::int64_t k = 0; k < m.size(); ++k) {
+      m.x[k] += s * dt * c.u[k];
+      m.y[k] += s * dt * c.v[k];
+    }
+    return summed(m, i).n;  // the lists of c still hold every pair
+  };
+  const double fd = (summed_at(1.0) - summed_at(-1.0)) / (2.0 * dt);
+  ASSERT_GT(std::abs(rate), 0.3);  // the flow does compress this neighbourhood (n0 ~ 3)
+  // dt^2 |d3n/dt3| ~ 1e-12 * (u/DL)^3 ~ 1e-5 relative; rounding of n / dt ~ 1e-10.
+  EXPECT_NEAR(rate, fd, 1e-5 * std::abs(rate));
+}
+
+TEST(DensitySums, TheShiftingGradientIgnoresTheWatersCompression) {
+  // A column compressed row by row to the hydrostatic n/n0 = s(depth) of the equation of state
+  // (as the scene builder lays it), c0 = 30 m/s as in the cases (0.1 % per metre), each particle
+  // carrying that n. G of the arrangement alone (the summed-density path) is the still water's
+  // own concentration gradient, kappa ds/dy; the evolved-density path takes the carried n's
+  // gradient out of it, to the first order of the strain between neighbours.
+  const double g = 9.81, c0 = 30.0, n0 = lattice().n0;
+  const auto s_of = [&](double depth) {
+    return std::pow(1.0 + 7.0 * g * depth / (c0 * c0), 1.0 / 7.0);
+  };
+  Cloud c;
+  std::vector<double> ratio;
+  double y = 0.0;
+  const int nx = 15, ny = 40;
+  for (int j = 0; j < ny; ++j) {
+    const double depth = (ny - j) * kDl;
+    for (int i = 0; i < nx; ++i) {
+      c.add(i * kDl, y);
+      ratio.push_back(s_of(depth));
+    }
+    y += row_spacing_for_density_ratio(kDl, kRe, s_of(depth - 0.5 * kDl));
+  }
+  c.build();
+  for (std::int64_t k = 0; k < c.size(); ++k) c.n[k] = n0 * ratio[k];
+  const auto i = at(7, 20, nx);
+  const Vec2 raw = summed(c, i, false).gradient;
+  const double expected = -lattice().concentration_response * std::pow(ratio[i], 1.0 - 7.0) * g /
+                          (c0 * c0);  // towards the denser water below
+  EXPECT_NEAR(raw.x, 0.0, 1e-9);
+  EXPECT_NEAR(raw.y, expected, 0.03 * std::abs(expected));
+  // The continuum's kappa is 1; the lattice's is close to it (1.007 at re = 3.5 DL).
+  EXPECT_NEAR(lattice().concentration_response, 1.0, 0.05);
+  const Vec2 carried = predicted(c, i, 0, {}, false).gradient;
+  EXPECT_NEAR(carried.y, 0.0, 0.05 * std::abs(expected));
+}
+
+TEST(DensityDiffusion, LeavesTheHydrostaticGradientAloneNextToAWall) {
+  // Water on a bed: the rows above y = 0 are fluid, those below are wall and ghost particles
+  // (not diffused across). n is the hydrostatic field n0 (1 + g (H - y) / c0^2).
+  const int nx = 15, ny = 14;
+  Cloud c;
+  for (int j = -4; j < ny - 4; ++j) {
+    for (int i = 0; i < nx; ++i) c.add(i * kDl, j * kDl);
+  }
+  c.build();
+  const double n0 = lattice().n0, g = 9.81, c0 = 20.0, H = 0.2;
+  for (std::int64_t k = 0; k < c.size(); ++k) c.n[k] = n0 * (1.0 + g * (H - c.y[k]) / (c0 * c0));
+  const std::int64_t fluid_begin = 4 * nx;  // rows below y = 0 come first
+  const Vec2 fourtakas = Vec2{0.0, -g} * (n0 / (c0 * c0)), molteni{};
+  const auto bottom = fluid_begin + 7;  // on the first fluid row, mid-tank
+  const auto middle = fluid_begin + 5 * nx + 7;
+  const auto lapl = [&](std::int64_t i, Vec2 h) { return predicted(c, i, fluid_begin, h).lapl; };
+  // Fourtakas et al. (2019): the hydrostatic part is removed pair by pair, so zero anywhere
+  // (to the rounding of terms ~1e-3).
+  EXPECT_NEAR(lapl(bottom, fourtakas), 0.0, 1e-14);
+  EXPECT_NEAR(lapl(middle, fourtakas), 0.0, 1e-14);
+  // Molteni & Colagrossi (2009): zero in the middle (the field is linear), not against the wall,
+  // where only the side above is summed: the gradient is diffused away there.
+  EXPECT_NEAR(lapl(middle, molteni), 0.0, 1e-14);
+  EXPECT_LT(lapl(bottom, molteni), -1e-5);
+}
+
+TEST(DensityDiffusion, SmoothsABump) {
+  Cloud c = block(15, 15);
+  const double n0 = lattice().n0;
+  std::fill(c.n.begin(), c.n.end(), n0);
+  const auto i = at(7, 7, 15);
+  c.n[i] = 1.01 * n0;
+  const PredictionSums d = predicted(c, i);
+  const auto step = NumberDensity_Jandaghian2020::make(0.1, kRe, 20.0, lattice().lambda, n0);
+  const double dt = 0.4 * kDl / 20.0;
+  const double next = step.advance(c.n[i], d.rate, d.lapl, dt);
+  // The bump decays, and by less than itself in one step (the explicit diffusion is stable:
+  // its factor times dt times sum W is delta/2 * 0.4 * 2d/(lambda/DL^2) ~ 0.04).
+  EXPECT_LT(next, c.n[i]);
+  EXPECT_GT(next, n0);
+}
+
+/// Flags of a cloud under either rule; `sums_n` and `grad` from one pass.
+struct Flags {
+  std::vector<bool> threshold, scan;
+};
+Flags flags(const Cloud& c) {
+  const FreeSurface_Koshizuka1996 rule{0.97, lattice().n0};
+  const FreeSurface_Marrone2010 scan{0.97, lattice().n0, 0.5 * kRe};
+  Flags f;
+  for (std::int64_t i = 0; i < c.size(); ++i) {
+    const DensitySums d = summed(c, i, false);
+    f.threshold.push_back(rule.is_surface(d.n));
+    f.scan.push_back(scan.is_surface(i, c.list.of(i), c.x.data(), c.y.data(), d.n, d.gradient));
+  }
+  return f;
+}
+
+TEST(FreeSurfaceScan, FlagsTheTopOfAJitteredBlockAndNothingDeeperThanRe) {
+  // A block 40 x 30 with free sides and top, jittered by up to +-0.2 DL. Interior: every particle
+  // farther than re from the block's edges.
+  const int nx = 40, ny = 30;
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    const Cloud c = block(nx, ny, 0.2, seed);
+    const Flags f = flags(c);
+    int interior_threshold = 0, interior_scan = 0, top_scan = 0;
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const auto k = at(i, j, nx);
+        const double edge = std::min({i, nx - 1 - i, j, ny - 1 - j}) * kDl;
+        if (edge > kRe) {
+          interior_threshold += f.threshold[k];
+          interior_scan += f.scan[k];
+        }
+        if (j == ny - 1) top_scan += f.scan[k];
+      }
+    }
+    EXPECT_EQ(interior_scan, 0) << "seed " << seed;
+    EXPECT_EQ(top_scan, nx) << "seed " << seed;
+    // The threshold of Eq. 2.10 does flag interior particles of the same block: the scan is
+    // what keeps them in the water.
+    EXPECT_GT(interior_threshold, 0) << "seed " << seed;
+  }
+}
+
+TEST(FreeSurfaceScan, AnExpandedInteriorIsNotASurface) {
+  // A wake: the middle of a block stretched by 3 % in both directions, so its particles sit at
+  // n < 0.97 n0 with particles all round. The threshold flags them; the scan must not.
+  const int nx = 40, ny = 40;
+  Cloud c;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const double cx = (i - 19.5) * kDl, cy = (j - 19.5) * kDl;
+      const double r = std::hypot(cx, cy);
+      const double s = r < 0.1 ? 1.03 : 1.0 + 0.03 * std::max(0.0, 1.0 - (r - 0.1) / 0.05);
+      c.add(cx * s, cy * s);
+    }
+  }
+  c.build();
+  const Flags f = flags(c);
+  int middle_threshold = 0, middle_scan = 0;
+  for (std::int64_t k = 0; k < c.size(); ++k) {
+    if (std::hypot(c.x[k], c.y[k]) < 0.08) {
+      middle_threshold += f.threshold[k];
+      middle_scan += f.scan[k];
+    }
+  }
+  EXPECT_GT(middle_threshold, 10);
+  EXPECT_EQ(middle_scan, 0);
+}
+
+TEST(FreeSurfaceScan, ALoneParticleAndAThreadAreSurface) {
+  Cloud c;
+  c.add(0.5, 0.5);                                   // alone
+  for (int i = 0; i < 10; ++i) c.add(i * kDl, 0.0);  // a thread one particle thick
+  c.build();
+  const Flags f = flags(c);
+  for (std::int64_t k = 0; k < c.size(); ++k) EXPECT_TRUE(f.scan[k]) << k;
+}
+
+TEST(Shifting, MakesAJitteredInteriorMoreRegular) {
+  // Shifting steps (|u|max dt = 0.05 DL each) on a jittered block: the spread of the summed n
+  // over the interior shrinks.
+  Cloud c = block(30, 30, 0.15);
+  const ParticleShifting_Sun2017 shifting{0.5 * kRe};
+  auto spread = [&](const Cloud& m) {
+    double s = 0.0, s2 = 0.0;
+    int count = 0;
+    for (int j = 8; j < 22; ++j) {
+      for (int i = 8; i < 22; ++i) {
+        const double n = summed(m, at(i, j, 30)).n;
+        s += n, s2 += n * n, ++count;
+      }
+    }
+    return std::sqrt(s2 / count - (s / count) * (s / count));
+  };
+  const double before = spread(c);
+  for (int step = 0; step < 20; ++step) {
+    std::vector<Vec2> dr(c.x.size());
+    for (std::int64_t k = 0; k < c.size(); ++k) {
+      dr[k] = shifting.shift(summed(c, k).gradient, 1.0, 0.05 * kDl, {});
+    }
+    for (std::int64_t k = 0; k < c.size(); ++k) {
+      c.x[k] += dr[k].x;
+      c.y[k] += dr[k].y;
+    }
+    c.build();
+  }
+  EXPECT_LT(spread(c), 0.5 * before);
+}
+
+TEST(Shifting, MovesSurfaceParticlesAlongTheSurfaceOnly) {
+  Cloud c = block(20, 10, 0.1);
+  const ParticleShifting_Sun2017 shifting{0.5 * kRe};
+  const auto top = at(10, 9, 20);
+  const Vec2 g = summed(c, top).gradient;
+  const Vec2 free = shifting.shift(g, 1.0, 0.05 * kDl, {});
+  const Vec2 along = shifting.shift(g, 1.0, 0.05 * kDl, {0.0, 1.0});
+  // Unprojected, the top particle is pulled out of the water; projected, its normal move is 0
+  // and its tangential move is kept.
+  EXPECT_GT(free.y, 0.0);
+  EXPECT_EQ(along.y, 0.0);
+  EXPECT_EQ(along.x, free.x);
+}
+
+TEST(TensileSwitch, AUniformTensionDoesNotPullParticlesTogether) {
+  // A particle with a close neighbour on its right, in water at a uniform -1 kPa. The sum form
+  // pulls it towards that neighbour (the tensile instability); the switch gives no force.
+  Cloud c = block(15, 15);
+  const auto i = at(7, 7, 15);
+  c.x[i] += 0.3 * kDl;
+  c.build();
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  std::vector<double> p_over_n2(c.x.size(), -1000.0 / (lc.n0 * lc.n0));
+  const auto nb = c.list.of(i);
+  const Vec2 plain = PressureGradient_Suzuki2007<false>{}.gradient(ops, i, nb, c.x.data(),
+                                                                   c.y.data(), p_over_n2.data());
+  const Vec2 switched = PressureGradient_Suzuki2007<true>{}.gradient(ops, i, nb, c.x.data(),
+                                                                     c.y.data(), p_over_n2.data());
+  // -grad p / rho points towards +x (the close neighbour): attraction.
+  EXPECT_LT(plain.x, 0.0);
+  EXPECT_EQ(switched.x, 0.0);
+  EXPECT_EQ(switched.y, 0.0);
+  // Under a positive pressure the switch changes nothing.
+  for (double& t : p_over_n2) t = -t;
+  EXPECT_EQ(PressureGradient_Suzuki2007<true>{}
+                .gradient(ops, i, nb, c.x.data(), c.y.data(), p_over_n2.data())
+                .x,
+            PressureGradient_Suzuki2007<false>{}
+                .gradient(ops, i, nb, c.x.data(), c.y.data(), p_over_n2.data())
+                .x);
+}
+
+TEST(PressureBound, ZeroClampsAndTheOthersKeepDownToTheFloor) {
+  const auto zero = PressureBound::make(NegativePressure::Zero, -99e3);
+  const auto keep = PressureBound::make(NegativePressure::Keep, -99e3);
+  const auto sw = PressureBound::make(NegativePressure::Sun2018Switch, -5e3);
+  EXPECT_EQ(zero(-300.0), 0.0);
+  EXPECT_EQ(zero(300.0), 300.0);
+  EXPECT_EQ(keep(-300.0), -300.0);
+  EXPECT_EQ(keep(-2e5), -99e3);
+  EXPECT_EQ(sw(-6e3), -5e3);
+}
+
+}  // namespace
+}  // namespace wcmps
