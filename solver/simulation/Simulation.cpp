@@ -109,8 +109,11 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   p_over_n2_.resize(ps.size());
   near_wall_.resize(ps.size());
   if (density_scheme_ == NumberDensityScheme::Continuity) n_sum_.resize(ps.size());
+  // G: read by the surface scan and the shifting, and written by the prediction's pass whenever
+  // n is evolved (it sums G with the rest, whoever reads it).
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010 ||
-      shifting_scheme_ != ShiftingScheme::None) {
+      shifting_scheme_ != ShiftingScheme::None ||
+      density_scheme_ == NumberDensityScheme::Continuity) {
     grad_x_.resize(ps.size());
     grad_y_.resize(ps.size());
   }
@@ -588,11 +591,17 @@ void Simulation::find_surface_band() {
     band_x_[j] += weight * nu.x;
     band_y_[j] += weight * nu.y;
   };
+  // Without G (the summed n, the threshold's surface, no shifting: the switch alone asks for the
+  // band) the members are found and no normals summed.
+  const bool normals = !grad_x_.empty();
   for (std::int64_t s = ps.fluid_begin(); s < ps.size(); ++s) {
     if (!t.surface[s]) continue;
-    const double g = std::hypot(grad_x_[s], grad_y_[s]);
-    if (!(g > 0.0)) continue;  // a lone particle: no neighbours to project
-    const Vec2 nu{-grad_x_[s] / g, -grad_y_[s] / g};
+    Vec2 nu;
+    if (normals) {
+      const double g = std::hypot(grad_x_[s], grad_y_[s]);
+      if (!(g > 0.0)) continue;  // a lone particle: no neighbours to project
+      nu = {-grad_x_[s] / g, -grad_y_[s] / g};
+    }
     add(s, 1.0, nu);
     for (const std::int32_t j : neighbours_.of(s)) {
       if (j < ps.fluid_begin()) continue;
