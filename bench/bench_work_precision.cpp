@@ -1,11 +1,12 @@
 // Work against precision: the error of a validation case against the wall time of its run, over
 // particle sizes, time-step rules (the study's fixed 2.5e-5 s, the adaptive Courant step with the
 // case's Courant number or courant:C with another) and
-// the pressure-gradient schemes the solver offers (docs/performance.md).
+// the pressure-gradient schemes the solver offers, and the stabilisation of docs/method.md (the
+// defaults) against the scheme of commit 3a85288 (docs/performance.md).
 //
 //   build/bin/bench_work_precision --study dambreak [--dl 0.01,0.007,0.005,0.0035]
-//       [--steps courant,fixed,courant:0.8] [--gradients all] [--repeats 3] [--threads 2]
-//       [--out FILE.csv]
+//       [--steps courant,fixed,courant:0.8] [--gradients all] [--stabilisation default,3a85288]
+//       [--repeats 3] [--threads 2] [--out FILE.csv]
 //   build/bin/bench_work_precision --study hydrostatic ...
 //   build/bin/bench_work_precision --study caseI [--dl 0.01,0.007,0.005] [--reference-dl 0.0025]
 //       [--reference FILE.csv] [--section A] [--time 0.4] [--samples PREFIX] ...
@@ -344,7 +345,8 @@ int usage(const char* msg) {
   std::fprintf(stderr,
                "bench_work_precision: %s\nusage: bench_work_precision --study "
                "dambreak|hydrostatic|caseI [--dl D1,D2,...] [--steps courant,fixed,courant:C] "
-               "[--gradients all|NAME,...] [--repeats N] [--threads N] [--out FILE.csv]\n"
+               "[--gradients all|NAME,...] [--stabilisation default,3a85288] [--repeats N] "
+               "[--threads N] [--out FILE.csv]\n"
                "  caseI only: [--reference-dl D] [--reference FILE.csv] [--section NAME] "
                "[--time T] [--settle S] [--samples PREFIX]\n",
                msg);
@@ -354,7 +356,7 @@ int usage(const char* msg) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string study, dls, steps = "courant,fixed", gradients, out;
+  std::string study, dls, steps = "courant,fixed", gradients, stabilisations = "default", out;
   std::string reference_path = "caseI_reference.csv", section_name = "A", samples_prefix;
   double reference_dl = 0.0025, sample_time = 0.4, settle = -1.0;
   int repeats = 3, threads = 2;
@@ -373,6 +375,8 @@ int main(int argc, char** argv) {
         steps = value();
       } else if (a == "--gradients") {
         gradients = value();
+      } else if (a == "--stabilisation") {
+        stabilisations = value();
       } else if (a == "--repeats") {
         repeats = std::stoi(value());
       } else if (a == "--threads") {
@@ -419,13 +423,18 @@ int main(int argc, char** argv) {
       return usage(("unknown step rule " + rule + " (fixed, courant or courant:C, C > 0)").c_str());
     }
   }
+  for (const auto& st : split(stabilisations)) {
+    if (st != "default" && st != "3a85288") {
+      return usage(("unknown stabilisation " + st + " (default or 3a85288)").c_str());
+    }
+  }
   // Case I is costly: by default only the gradient its case file names.
   if (gradients.empty()) gradients = case_i_study ? "case" : "all";
 
   set_thread_count(threads);
   const std::string source = WCMPS_SOURCE_DIR;
   std::ostringstream csv;
-  csv << "study,dl_m,particles,step_rule,gradient,steps,repeats,wall_seconds_median,"
+  csv << "study,dl_m,particles,step_rule,gradient,stabilisation,steps,repeats,wall_seconds_median,"
          "wall_seconds_min,wall_seconds_max,error,error_measure,threads\n";
   try {
     const CaseSpec base = parse_case_file(source + "/cases/" + study + "/case.toml");
@@ -474,66 +483,74 @@ int main(int argc, char** argv) {
     for (const auto& d : split(dls)) {
       for (const auto& rule : split(steps)) {
         for (const auto scheme : schemes) {
-          CaseSpec spec = base;
-          spec.dl = std::stod(d);
-          if (!case_i_study) spec.settle_time = 0.0;
-          if (case_i_study && settle >= 0.0) spec.settle_time = settle;
-          if (rule == "fixed") {
-            spec.step_mode = TimeStepMode::Fixed;
-            spec.fixed_step = 2.5e-5;  // the study's
-          } else if (rule == "courant") {
-            spec.step_mode = TimeStepMode::Courant;
-          } else {  // courant:C, checked above
-            spec.step_mode = TimeStepMode::Courant;
-            spec.courant = std::stod(rule.substr(8));
-          }
-          spec.pressure_gradient = scheme;
-          std::vector<double> seconds;
-          Result first;
-          CaseISamples samples;
-          for (int k = 0; k < repeats; ++k) {
-            const Result r = study == "dambreak" ? dam_break(spec, data)
-                             : study == "hydrostatic"
-                                 ? still_water(spec)
-                                 : case_i(spec, sample_time, section, &samples);
-            if (k == 0) first = r;
-            if (k > 0 && r.steps != first.steps) {
-              std::fprintf(stderr, "bench_work_precision: repeat %d took another path\n", k);
-              return 1;
+          for (const auto& stabilisation : split(stabilisations)) {
+            CaseSpec spec = base;
+            if (stabilisation == "3a85288") {  // the cures of docs/method.md off
+              spec.negative_pressure = NegativePressure::Zero;
+              spec.number_density = NumberDensityScheme::Summation;
+              spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
+              spec.shifting = ShiftingScheme::None;
             }
-            seconds.push_back(r.seconds);
-            if (!r.unstable.empty()) {
-              std::fprintf(stderr, "  unstable: %s\n", r.unstable.c_str());
-              break;  // an unstable run is not timed again
+            spec.dl = std::stod(d);
+            if (!case_i_study) spec.settle_time = 0.0;
+            if (case_i_study && settle >= 0.0) spec.settle_time = settle;
+            if (rule == "fixed") {
+              spec.step_mode = TimeStepMode::Fixed;
+              spec.fixed_step = 2.5e-5;  // the study's
+            } else if (rule == "courant") {
+              spec.step_mode = TimeStepMode::Courant;
+            } else {  // courant:C, checked above
+              spec.step_mode = TimeStepMode::Courant;
+              spec.courant = std::stod(rule.substr(8));
             }
-          }
-          std::sort(seconds.begin(), seconds.end());
-          std::vector<std::pair<double, std::string>> errors;
-          if (!case_i_study) {
-            errors.emplace_back(first.error,
-                                study == "dambreak" ? "rms_front_Z" : "rms_p_over_rho_g_H");
-          } else {
-            const bool ok = first.unstable.empty();
-            errors.emplace_back(ok ? surface_error(samples, reference) : NAN, "rms_eta");
-            errors.emplace_back(ok ? section_error(samples, reference) : NAN,
-                                "rms_u_" + section_name);
-            if (ok && !samples_prefix.empty()) {  // each run's samples, as the reference's
-              write_reference(samples_prefix + "_" + d + "_" + rule + ".csv",
-                              reference_key(spec, sample_time, section_name), samples,
-                              section_name);
+            spec.pressure_gradient = scheme;
+            std::vector<double> seconds;
+            Result first;
+            CaseISamples samples;
+            for (int k = 0; k < repeats; ++k) {
+              const Result r = study == "dambreak" ? dam_break(spec, data)
+                               : study == "hydrostatic"
+                                   ? still_water(spec)
+                                   : case_i(spec, sample_time, section, &samples);
+              if (k == 0) first = r;
+              if (k > 0 && r.steps != first.steps) {
+                std::fprintf(stderr, "bench_work_precision: repeat %d took another path\n", k);
+                return 1;
+              }
+              seconds.push_back(r.seconds);
+              if (!r.unstable.empty()) {
+                std::fprintf(stderr, "  unstable: %s\n", r.unstable.c_str());
+                break;  // an unstable run is not timed again
+              }
             }
-          }
-          const std::string name(scheme_key(kPressureGradientSchemes, scheme));
-          for (const auto& [error, measure] : errors) {
-            char line[512];
-            std::snprintf(line, sizeof line,
-                          "%s,%g,%lld,%s,%s,%lld,%zu,%.4g,%.4g,%.4g,%.6g,%s,%d\n", study.c_str(),
-                          spec.dl, static_cast<long long>(first.particles), rule.c_str(),
-                          name.c_str(), static_cast<long long>(first.steps), seconds.size(),
-                          seconds[seconds.size() / 2], seconds.front(), seconds.back(), error,
-                          measure.c_str(), threads);
-            csv << line;
-            std::fputs(line, stderr);
+            std::sort(seconds.begin(), seconds.end());
+            std::vector<std::pair<double, std::string>> errors;
+            if (!case_i_study) {
+              errors.emplace_back(first.error,
+                                  study == "dambreak" ? "rms_front_Z" : "rms_p_over_rho_g_H");
+            } else {
+              const bool ok = first.unstable.empty();
+              errors.emplace_back(ok ? surface_error(samples, reference) : NAN, "rms_eta");
+              errors.emplace_back(ok ? section_error(samples, reference) : NAN,
+                                  "rms_u_" + section_name);
+              if (ok && !samples_prefix.empty()) {  // each run's samples, as the reference's
+                write_reference(samples_prefix + "_" + d + "_" + rule + ".csv",
+                                reference_key(spec, sample_time, section_name), samples,
+                                section_name);
+              }
+            }
+            const std::string name(scheme_key(kPressureGradientSchemes, scheme));
+            for (const auto& [error, measure] : errors) {
+              char line[512];
+              std::snprintf(
+                  line, sizeof line, "%s,%g,%lld,%s,%s,%s,%lld,%zu,%.4g,%.4g,%.4g,%.6g,%s,%d\n",
+                  study.c_str(), spec.dl, static_cast<long long>(first.particles), rule.c_str(),
+                  name.c_str(), stabilisation.c_str(), static_cast<long long>(first.steps),
+                  seconds.size(), seconds[seconds.size() / 2], seconds.front(), seconds.back(),
+                  error, measure.c_str(), threads);
+              csv << line;
+              std::fputs(line, stderr);
+            }
           }
         }
       }

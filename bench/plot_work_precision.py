@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Work-precision plot of bench_work_precision's CSV: error against wall time, log-log, a line
-per (time-step rule, pressure gradient) through its particle sizes, a panel per error measure;
+per (time-step rule, pressure gradient, stabilisation) through its particle sizes, a panel per error measure;
 and the settings on the best front of each (no other run both faster and more accurate).
 
 usage: plot_work_precision.py RESULTS.csv OUT.png [TITLE]
@@ -27,6 +27,8 @@ def main():
         r["t"] = float(r["wall_seconds_median"])
         r["e"] = float(r["error"])
         r["dl"] = float(r["dl_m"])
+        r["grad"] = r["gradient"] + ("" if r.get("stabilisation", "default") == "default"
+                                     else f" ({r['stabilisation']})")
     # A panel per error measure (case I has two: the surface and a section's velocity).
     measures = list(dict.fromkeys(r["error_measure"] for r in rows))
     fig, axes = plt.subplots(1, len(measures), figsize=(7 * len(measures), 5), dpi=110,
@@ -34,9 +36,9 @@ def main():
     front = []
     for ax, measure in zip(axes[0], measures):
         mine = [r for r in rows if r["error_measure"] == measure]
-        series = sorted({(r["step_rule"], r["gradient"]) for r in mine})
+        series = sorted({(r["step_rule"], r["grad"]) for r in mine})
         for rule, grad in series:
-            pts = sorted((r for r in mine if (r["step_rule"], r["gradient"]) == (rule, grad)),
+            pts = sorted((r for r in mine if (r["step_rule"], r["grad"]) == (rule, grad)),
                          key=lambda r: r["t"])
             ax.loglog([p["t"] for p in pts], [p["e"] for p in pts],
                       "o-" if rule == "courant" else "s--", label=f"{grad}, {rule} step")
@@ -56,7 +58,7 @@ def main():
     print("best front (no run both faster and more accurate):")
     for r in sorted(front, key=lambda r: (r["error_measure"], r["t"])):
         print(f"  {r['error_measure']}: DL {r['dl'] * 1000:g} mm, {r['step_rule']} step, "
-              f"{r['gradient']}: {r['t']:.3g} s, error {r['e']:.3g}")
+              f"{r['grad']}: {r['t']:.3g} s, error {r['e']:.3g}")
     return 0 if all(math.isfinite(r["e"]) for r in front) else 1
 
 

@@ -2,16 +2,34 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <stdexcept>
+
 #include "scene/CaseParser.h"
 
 namespace wcmps::test {
+
+void apply_scheme_override(CaseSpec& spec) {
+  const char* scheme = std::getenv("WCMPS_TEST_SCHEME");
+  if (!scheme || !*scheme) return;
+  if (std::string(scheme) != "3a85288") {
+    throw std::invalid_argument(std::string("WCMPS_TEST_SCHEME=") + scheme +
+                                ": the one scheme known is 3a85288");
+  }
+  spec.negative_pressure = NegativePressure::Zero;
+  spec.number_density = NumberDensityScheme::Summation;
+  spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
+  spec.shifting = ShiftingScheme::None;
+}
 
 std::string source_path(const std::string& relative) {
   return std::string(WCMPS_SOURCE_DIR) + "/" + relative;
 }
 
 CaseSpec load_case(const std::string& relative) {
-  return parse_case_file(source_path(relative));
+  CaseSpec spec = parse_case_file(source_path(relative));
+  apply_scheme_override(spec);
+  return spec;
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {

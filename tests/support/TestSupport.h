@@ -13,8 +13,14 @@ namespace wcmps::test {
 /// Absolute path of a file in the source tree, e.g. "cases/dambreak/case.toml".
 std::string source_path(const std::string& relative);
 
-/// A case file of cases/ parsed, ready for overrides of its fields.
+/// A case file of cases/ parsed, ready for overrides of its fields, with the scheme that
+/// apply_scheme_override() asks for.
 CaseSpec load_case(const std::string& relative);
+
+/// WCMPS_TEST_SCHEME=3a85288 in the environment puts the scheme of commit 3a85288 into the spec
+/// (the stabilisation's options off: docs/method.md), so that the validation tests measure the
+/// old scheme side by side with the defaults (docs/validation.md). Unset: nothing changes.
+void apply_scheme_override(CaseSpec& spec);
 
 /// An empty scratch directory unique to the running test (removed first if it exists).
 std::filesystem::path scratch_dir(const std::string& name);

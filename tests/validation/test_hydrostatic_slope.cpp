@@ -147,7 +147,8 @@ TEST(HydrostaticSlope, FiftyDegreeBedDl10mm) {
   const auto at = text.find("slope = 40.0");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, 12, "slope = 50.0");
-  const CaseSpec spec = parse_case_text(text, forty.file.file);
+  CaseSpec spec = parse_case_text(text, forty.file.file);
+  test::apply_scheme_override(spec);
   ASSERT_DOUBLE_EQ(spec.tank->slope_deg, 50.0);
   expect_still(run(spec, 0.5, "slope50_dl10mm"), spec.tank->depth);
 }

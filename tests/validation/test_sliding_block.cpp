@@ -47,6 +47,7 @@ rectangle = { min = [0.0, 0.0], max = [0.6, 0.4] }
 )";
   text.replace(text.find("DL"), 2, std::to_string(dl));
   CaseSpec spec = parse_case_text(text, "held-square.toml");
+  test::apply_scheme_override(spec);
   BodySpec body;
   body.wall = 1;
   body.density = 2000.0;
@@ -163,7 +164,8 @@ TEST(SlidingBlock, WaterFollowsTheBlock) {
     }
     return largest;
   };
-  CaseSpec spec = test::load_case("cases/caseI/case.toml");
+  // Not test::load_case: this test sets both schemes itself.
+  CaseSpec spec = parse_case_file(test::source_path("cases/caseI/case.toml"));
   std::printf("defaults:\n");
   const double now = largest_cavity(spec);
   spec.negative_pressure = NegativePressure::Zero;
