@@ -1,7 +1,8 @@
 """Checks the CSV products of `wcmps post` on the short case I run (tests/cli/CMakeLists.txt):
 every requested time has every section with its samples from the bed (Y = 0) to the surface
 (Y = 1), the section averages over X/L = 0 ... 3.5, the free surface across the tank near the
-still-water line, and the line C-A.
+still-water line, the line C-A, and the cavity at every frame of the series (none: the water
+is whole at these early times).
 
 usage: check_post.py POST_DIR TIME [TIME ...]
 """
@@ -27,7 +28,15 @@ def main():
     averages = rows(post, "section_averages.csv")
     surface = rows(post, "free_surface.csv")
     lines = rows(post, "lines.csv")
+    cavity = rows(post, "cavity.csv")
     errors = []
+    # Every frame of the run (0, 0.02, 0.04, 0.05 s), whatever --times asks for, and no cavity:
+    # at t <= 0.05 s the water has not begun to leave the block (measured 0 at every frame).
+    frames = [float(r["time [s]"]) for r in cavity]
+    if frames != [0.0, 0.02, 0.04, 0.05]:
+        errors.append(f"cavity at times {frames}, expected every frame 0 ... 0.05 s")
+    if any(float(r["area [m^2]"]) != 0.0 for r in cavity):
+        errors.append("cavity: " + ", ".join(f"{r['area [m^2]']} m^2 at {r['time [s]']} s" for r in cavity))
     for t in times:
         names = [r["section"] for r in by_time(summary, t)]
         if names != list("ABCDEFG"):
