@@ -42,12 +42,7 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl, bool ol
   CaseSpec spec =
       parse_case_file(std::string(WCMPS_SOURCE_DIR) + "/cases/" + case_dir + "/case.toml");
   spec.dl = dl;
-  if (old) {
-    spec.negative_pressure = NegativePressure::Zero;
-    spec.number_density = NumberDensityScheme::Summation;
-    spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
-    spec.shifting = ShiftingScheme::None;
-  }
+  if (old) use_scheme_3a85288(spec);
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
   auto sim = std::make_unique<Simulation>(spec, build_scene(spec));

@@ -485,12 +485,7 @@ int main(int argc, char** argv) {
         for (const auto scheme : schemes) {
           for (const auto& stabilisation : split(stabilisations)) {
             CaseSpec spec = base;
-            if (stabilisation == "3a85288") {  // the cures of docs/method.md off
-              spec.negative_pressure = NegativePressure::Zero;
-              spec.number_density = NumberDensityScheme::Summation;
-              spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
-              spec.shifting = ShiftingScheme::None;
-            }
+            if (stabilisation == "3a85288") use_scheme_3a85288(spec);
             spec.dl = std::stod(d);
             if (!case_i_study) spec.settle_time = 0.0;
             if (case_i_study && settle >= 0.0) spec.settle_time = settle;

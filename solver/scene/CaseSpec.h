@@ -257,4 +257,14 @@ inline TimeStepRule settle_step_rule(const CaseSpec& spec, double c0) {
   return rule;
 }
 
+/// The stabilisation of docs/method.md ("A stabilised step") switched off: negative pressures
+/// set to zero, the summed number density, the threshold's free surface, no shifting; the
+/// scheme of commit 3a85288, kept to measure the cures against.
+inline void use_scheme_3a85288(CaseSpec& c) {
+  c.negative_pressure = NegativePressure::Zero;
+  c.number_density = NumberDensityScheme::Summation;
+  c.free_surface = FreeSurfaceScheme::Koshizuka1996;
+  c.shifting = ShiftingScheme::None;
+}
+
 }  // namespace wcmps

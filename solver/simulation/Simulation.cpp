@@ -477,33 +477,25 @@ void Simulation::compute_number_density() {
   // Where the particles' positions are read for the surface: r^n under an evolved n (the
   // prediction summed the fluid's n and G there), r* under the summed n (Eq. 2.17).
   const ParticleState& at = surface_positions();
-  // Wall particles: their summed n (the "eos" wall pressure, the frames) and, for the surface
-  // scan, its gradient (which of them are wet).
-  parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
-    const IdRange nb = neighbours_.of(w);
-    if (scan) {
-      const DensitySums d = density_sums<true>(sums_setup_, w, nb, at.x.data(), at.y.data());
-      t.n[w] = d.n;
-      grad_x_[w] = d.gradient.x;
-      grad_y_[w] = d.gradient.y;
-    } else {
-      t.n[w] = ops_.number_density(w, nb, at.x.data(), at.y.data());
-    }
-  });
-  pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
-  if (density_scheme_ == NumberDensityScheme::Continuity) return;  // summed in the prediction
-  // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
-  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+  // The summed n of particle i at the positions `pos`, and G where it is asked for.
+  const auto sum = [&](std::int64_t i, bool with_gradient, const ParticleState& pos) {
     const IdRange nb = neighbours_.of(i);
-    if (gradient) {
-      const DensitySums d = density_sums<true>(sums_setup_, i, nb, t.x.data(), t.y.data());
+    if (with_gradient) {
+      const DensitySums d = density_sums<true>(sums_setup_, i, nb, pos.x.data(), pos.y.data());
       t.n[i] = d.n;
       grad_x_[i] = d.gradient.x;
       grad_y_[i] = d.gradient.y;
     } else {
-      t.n[i] = ops_.number_density(i, nb, t.x.data(), t.y.data());
+      t.n[i] = ops_.number_density(i, nb, pos.x.data(), pos.y.data());
     }
-  });
+  };
+  // Wall particles: their summed n (the "eos" wall pressure, the frames) and, for the surface
+  // scan, its gradient (which of them are wet).
+  parallel_for(0, ps.wall_end(), [&](std::int64_t w) { sum(w, scan, at); });
+  pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
+  if (density_scheme_ == NumberDensityScheme::Continuity) return;  // summed in the prediction
+  // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) { sum(i, gradient, t); });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 

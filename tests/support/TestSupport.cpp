@@ -16,10 +16,7 @@ void apply_scheme_override(CaseSpec& spec) {
     throw std::invalid_argument(std::string("WCMPS_TEST_SCHEME=") + scheme +
                                 ": the one scheme known is 3a85288");
   }
-  spec.negative_pressure = NegativePressure::Zero;
-  spec.number_density = NumberDensityScheme::Summation;
-  spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
-  spec.shifting = ShiftingScheme::None;
+  use_scheme_3a85288(spec);
 }
 
 std::string source_path(const std::string& relative) {

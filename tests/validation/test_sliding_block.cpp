@@ -168,10 +168,7 @@ TEST(SlidingBlock, WaterFollowsTheBlock) {
   CaseSpec spec = parse_case_file(test::source_path("cases/caseI/case.toml"));
   std::printf("defaults:\n");
   const double now = largest_cavity(spec);
-  spec.negative_pressure = NegativePressure::Zero;
-  spec.number_density = NumberDensityScheme::Summation;
-  spec.free_surface = FreeSurfaceScheme::Koshizuka1996;
-  spec.shifting = ShiftingScheme::None;
+  use_scheme_3a85288(spec);
   std::printf("scheme of 3a85288:\n");
   const double before = largest_cavity(spec);
   std::printf("largest cavity: %.3f cm^2 (defaults), %.3f cm^2 (3a85288)\n", now * 1e4,
