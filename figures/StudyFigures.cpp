@@ -24,15 +24,17 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "Canvas.h"
 #include "OffscreenDisplay.h"
-#include "app/ExitCodes.h"
 #include "core/Error.h"
+#include "core/ExitCodes.h"
 #include "io/AtomicFile.h"
 #include "io/FrameReader.h"
 #include "io/RunDirectory.h"
+#include "io/RunLock.h"
 #include "io/SeriesIndex.h"
 #include "scene/CaseParser.h"
 
@@ -749,6 +751,16 @@ int figures_command(const FiguresOptions& o) {
   }
 
   const fs::path out = o.output_dir.empty() ? runs.front().dir / "figures" : fs::path(o.output_dir);
+  // Writing into the first run's directory: not while a run has it (io/RunLock.h).
+  std::optional<RunLock> lock;
+  if (o.output_dir.empty()) {
+    try {
+      lock.emplace(runs.front().dir, "wcmps figures");
+    } catch (const IoError& e) {
+      std::cerr << "wcmps: error: " << e.what() << '\n';
+      return exit_code::kIo;
+    }
+  }
   std::unique_ptr<OffscreenDisplay> display;
   try {
     display = std::make_unique<OffscreenDisplay>();

@@ -12,15 +12,16 @@
 #include <nlohmann/json.hpp>
 
 #include "app/EmbeddedCase.h"
-#include "app/ExitCodes.h"
 #include "app/StopSignals.h"
 #include "core/Error.h"
+#include "core/ExitCodes.h"
 #include "core/Parallel.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/BodyCsv.h"
 #include "io/Checkpoint.h"
 #include "io/RunDirectory.h"
+#include "io/RunLock.h"
 #include "io/RunSummary.h"
 #include "io/VtpSeriesWriter.h"
 #include "scene/CaseParser.h"
@@ -286,10 +287,21 @@ int run_command(const RunOptions& o) {
   const bool tty = ::isatty(STDERR_FILENO) == 1;
   std::ofstream log;
   std::optional<Simulation> sim;
+  std::optional<RunLock> lock;  // held until the run ends (io/RunLock.h)
   try {
     if (restart) {
+      lock.emplace(dir, "wcmps run --restart " + dir.string());
       remove_stale_temporaries(dir);  // of a run that was killed while writing
     } else {
+      // A run there now is named first (its lock file exists while it runs); then nothing is
+      // written into a directory a run may not take (another's files, an earlier run without
+      // --overwrite); then the lock (made if need be), then the rest.
+      if (fs::exists(dir / RunLock::kFile)) lock.emplace(dir, "wcmps run " + spec.file.file);
+      check_output_directory(dir, o.overwrite);
+      std::error_code ec;
+      fs::create_directories(dir, ec);
+      if (ec) throw IoError("cannot create output directory " + dir.string() + ": " + ec.message());
+      if (!lock) lock.emplace(dir, "wcmps run " + spec.file.file);
       prepare_run_directory(dir, o.overwrite);
       write_file_atomically(dir / RunFiles::kCase, spec.source_text);
     }

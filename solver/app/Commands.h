@@ -1,6 +1,6 @@
 #pragma once
 /// @file Commands.h
-/// @brief The subcommands of the wcmps program. Each returns an exit code (app/ExitCodes.h).
+/// @brief The subcommands of the wcmps program. Each returns an exit code (core/ExitCodes.h).
 
 #include <optional>
 #include <string>

@@ -27,12 +27,13 @@
 #include <sstream>
 #include <thread>
 
-#include "app/ExitCodes.h"
 #include "core/Error.h"
+#include "core/ExitCodes.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/FrameReader.h"
 #include "io/RunDirectory.h"
+#include "io/RunLock.h"
 #include "io/SeriesIndex.h"
 #include "io/VtkXmlFile.h"
 #include "scene/CaseParser.h"
@@ -187,6 +188,16 @@ int post_command(const PostOptions& o) {
   vtkSMPTools::Initialize(threads);
 
   const fs::path out = o.output_dir.empty() ? run / RunFiles::kPost : fs::path(o.output_dir);
+  // Writing into the run directory: it must not be a run's that is still going (io/RunLock.h).
+  std::optional<RunLock> lock;
+  if (o.output_dir.empty()) {
+    try {
+      lock.emplace(run, "wcmps post " + run.string());
+    } catch (const IoError& e) {
+      std::cerr << "wcmps: error: " << e.what() << '\n';
+      return exit_code::kIo;
+    }
+  }
   fs::create_directories(out, ec);
   if (ec || !fs::is_directory(out)) {
     std::cerr << "wcmps: error: " << out.string() << ": cannot create the output directory\n";

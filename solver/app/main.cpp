@@ -13,8 +13,8 @@
 
 #include "StudyFigures.h"
 #include "app/Commands.h"
-#include "app/ExitCodes.h"
 #include "app/Post.h"
+#include "core/ExitCodes.h"
 #include "core/Version.h"
 
 int main(int argc, char** argv) {

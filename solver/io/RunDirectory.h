@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace wcmps {
 
@@ -20,11 +21,18 @@ struct RunFiles {
   static constexpr const char* kPost = "post";
 };
 
-/// Makes `dir` ready for a new run. A missing directory is created; an empty one is used. One
+/// Makes `dir` ready for a new run. A missing directory is created; an empty one (or one with
+/// only the lock of io/RunLock.h, which the caller holds and which is kept) is used. One
 /// that holds an earlier run is replaced only if `overwrite` is set (its run files are removed,
 /// nothing else). A directory holding anything that is not a run file is refused. Throws
 /// IoError naming the directory and the reason; checks that it is writable.
 void prepare_run_directory(const std::filesystem::path& dir, bool overwrite);
+
+/// What prepare_run_directory() refuses, checked before anything is written there: throws
+/// IoError if `dir` exists and is not a directory, holds anything a run does not write, or holds
+/// an earlier run and `overwrite` is not set. Returns the run files it holds.
+std::vector<std::filesystem::path> check_output_directory(const std::filesystem::path& dir,
+                                                          bool overwrite);
 
 /// True for the names a run writes (series, summary, log, case copy, frames, checkpoints,
 /// temporaries) and for the post directory made from it.
