@@ -27,9 +27,9 @@
 #include <utility>
 #include <vector>
 
-#include "body/SlideMotion.h"
 #include "core/Vec2.h"
 #include "particles/ParticleSet.h"
+#include "physics/SlideMotion.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/StateArchive.h"

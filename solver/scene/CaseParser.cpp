@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "body/SlideMotion.h"
+#include "physics/SlideMotion.h"
 #include "scene/Geometry.h"
 
 namespace wcmps {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "body/SlideMotion.h"
+#include "physics/SlideMotion.h"
 
 namespace wcmps {
 namespace {

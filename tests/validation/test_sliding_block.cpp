@@ -10,9 +10,9 @@
 #include <fstream>
 #include <string>
 
-#include "body/SlideMotion.h"
 #include "core/Parallel.h"
 #include "io/BodyCsv.h"
+#include "physics/SlideMotion.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"

@@ -1,4 +1,4 @@
-#include "body/SlideMotion.h"
+#include "physics/SlideMotion.h"
 
 #include <algorithm>
 #include <cmath>
