@@ -115,6 +115,44 @@ std::vector<Vec2> offset_polyline(const std::vector<Vec2>& pts, bool closed,
   return out;
 }
 
+namespace {
+
+/// How sample_polyline lays the points of one segment of a polyline.
+struct SegmentSampling {
+  bool from_corner;    ///< one free end: `steps` + 1 points `spacing` apart from the corner
+  bool free_at_end;    ///< (from_corner) the free end is b, the corner a
+  std::int64_t steps;  ///< equal steps (both ends corners or both free), or whole spacings
+  bool extra_end;      ///< (from_corner) the free end itself is added
+  bool skip_start, skip_end;
+  std::int64_t count() const {
+    return steps + 1 + (from_corner && extra_end ? 1 : 0) - (skip_start ? 1 : 0) -
+           (skip_end ? 1 : 0);
+  }
+};
+
+SegmentSampling plan_segment(double length, std::size_t s, std::size_t ns, bool closed,
+                             double spacing) {
+  SegmentSampling p{};
+  const bool free_start = !closed && s == 0;
+  const bool free_end = !closed && s + 1 == ns;
+  p.skip_start = s > 0;                // the shared vertex was placed already...
+  p.skip_end = closed && s + 1 == ns;  // ...or is the first point of the line
+  p.from_corner = free_start != free_end;
+  p.free_at_end = free_end;
+  if (p.from_corner) {
+    // One free end: exactly `spacing` apart from the corner, so rows stay in line with the
+    // lattice; the free end itself only if more than half a spacing remains.
+    p.steps = static_cast<std::int64_t>(std::floor(length / spacing + 1e-9));
+    p.extra_end = length - p.steps * spacing > 0.5 * spacing * (1.0 + 1e-9);
+  } else {
+    // Both ends corners (or both free): round(length / spacing) equal steps.
+    p.steps = std::max<std::int64_t>(1, std::llround(length / spacing));
+  }
+  return p;
+}
+
+}  // namespace
+
 std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& pts, bool closed,
                                             double spacing) {
   std::vector<PolylineSample> out;
@@ -124,31 +162,36 @@ std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& pts, bool c
     const Vec2 a = segs[s].a, b = segs[s].b;
     const double length = norm(b - a);
     const Vec2 dir = (b - a) * (1.0 / length);
-    const bool free_start = !closed && s == 0;
-    const bool free_end = !closed && s + 1 == ns;
-    const bool skip_start = s > 0;                // the shared vertex was placed already...
-    const bool skip_end = closed && s + 1 == ns;  // ...or is the first point of the line
+    const SegmentSampling plan = plan_segment(length, s, ns, closed, spacing);
     std::vector<Vec2> points;
-    if (free_start != free_end) {
-      // One free end: exactly `spacing` apart from the corner, so rows stay in line with the
-      // lattice; the free end itself only if more than half a spacing remains.
-      const Vec2 corner = free_end ? a : b;
-      const Vec2 out_dir = free_end ? dir : -dir;
-      const auto m = static_cast<int>(std::floor(length / spacing + 1e-9));
-      for (int k = 0; k <= m; ++k) points.push_back(corner + out_dir * (k * spacing));
-      if (length - m * spacing > 0.5 * spacing * (1.0 + 1e-9)) points.push_back(free_end ? b : a);
-      if (!free_end) std::reverse(points.begin(), points.end());
+    if (plan.from_corner) {
+      const Vec2 corner = plan.free_at_end ? a : b;
+      const Vec2 out_dir = plan.free_at_end ? dir : -dir;
+      for (std::int64_t k = 0; k <= plan.steps; ++k) {
+        points.push_back(corner + out_dir * (static_cast<double>(k) * spacing));
+      }
+      if (plan.extra_end) points.push_back(plan.free_at_end ? b : a);
+      if (!plan.free_at_end) std::reverse(points.begin(), points.end());
     } else {
-      // Both ends corners (or both free): round(length / spacing) equal steps.
-      const int m = std::max(1, static_cast<int>(std::lround(length / spacing)));
-      for (int k = 0; k <= m; ++k) points.push_back(a + (b - a) * (static_cast<double>(k) / m));
+      for (std::int64_t k = 0; k <= plan.steps; ++k) {
+        points.push_back(a + (b - a) * (static_cast<double>(k) / static_cast<double>(plan.steps)));
+      }
     }
     for (std::size_t k = 0; k < points.size(); ++k) {
-      if ((k == 0 && skip_start) || (k + 1 == points.size() && skip_end)) continue;
+      if ((k == 0 && plan.skip_start) || (k + 1 == points.size() && plan.skip_end)) continue;
       out.push_back({points[k], static_cast<int>(s)});
     }
   }
   return out;
+}
+
+std::int64_t count_polyline_samples(const std::vector<Vec2>& pts, bool closed, double spacing) {
+  const auto segs = polyline_segments(pts, closed);
+  std::int64_t count = 0;
+  for (std::size_t s = 0; s < segs.size(); ++s) {
+    count += plan_segment(norm(segs[s].b - segs[s].a), s, segs.size(), closed, spacing).count();
+  }
+  return count;
 }
 
 }  // namespace wcmps

@@ -2,6 +2,7 @@
 /// @file Geometry.h
 /// @brief Plane geometry for building scenes: polygons, polylines, their offsets and sampling.
 
+#include <cstdint>
 #include <vector>
 
 #include "core/Vec2.h"
@@ -61,5 +62,8 @@ struct PolylineSample {
 /// apart from its shared vertex, its free end added if more than half a spacing remains.
 std::vector<PolylineSample> sample_polyline(const std::vector<Vec2>& points, bool closed,
                                             double spacing);
+
+/// The number of points sample_polyline lays, without laying them.
+std::int64_t count_polyline_samples(const std::vector<Vec2>& points, bool closed, double spacing);
 
 }  // namespace wcmps

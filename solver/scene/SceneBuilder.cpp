@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "neighbours/CellGrid.h"
+#include "scene/FluidLattice.h"
 
 namespace wcmps {
 namespace {
@@ -17,33 +18,60 @@ std::string at(Vec2 p) {
   return buf;
 }
 
-/// How messages name a shape: as the case file does, or by its place in the spec.
-std::string wall_label(const CaseSpec& spec, std::size_t k) {
-  const std::string& l = spec.walls[k].label;
-  return l.empty() ? "[[wall]] #" + std::to_string(k + 1) : l;
-}
-std::string fluid_label(const CaseSpec& spec, std::size_t k) {
-  const std::string& l = spec.fluids[k].label;
-  return l.empty() ? "[[fluid]] #" + std::to_string(k + 1) : l;
-}
-
-struct WallGeometry : WallSurface {
-  double thickness = 0.0;  // from the surface to the last ghost row + DL/2
-};
-
-/// Does the ray from p along direction g hit the fluid side of a wall surface?
-bool has_wall_along(const std::vector<WallGeometry>& walls, Vec2 p, Vec2 g, double reach) {
-  const Vec2 q = p + g * reach;
-  for (const auto& w : walls) {
-    for (std::size_t s = 0; s < w.surface.size(); ++s) {
-      const auto& seg = w.surface[s];
-      if (dot(p - seg.a, w.normals[s]) < 0.0 && segments_intersect(p, q, seg.a, seg.b)) {
-        return true;
-      }
+/// The nearest of the points [first, end) of a list to a given point, through a grid of cells
+/// one spacing wide over them: rings of cells around the point's cell are searched outwards
+/// until the nearest found is closer than the next ring can be. Equal distances go to the lower
+/// index, so the answer is the linear scan's (the builder's before this grid: quadratic in the
+/// wall's length).
+class NearestPoint {
+ public:
+  NearestPoint() = default;
+  NearestPoint(const std::vector<ParticleSeed>& points, std::size_t first, double cell)
+      : first_(first), cell_(cell) {
+    Vec2 lo = points[first].position, hi = lo;
+    for (std::size_t i = first; i < points.size(); ++i) {
+      x_.push_back(points[i].position.x);
+      y_.push_back(points[i].position.y);
+      lo = {std::min(lo.x, x_.back()), std::min(lo.y, y_.back())};
+      hi = {std::max(hi.x, x_.back()), std::max(hi.y, y_.back())};
     }
+    grid_.configure(lo - Vec2{cell, cell}, hi + Vec2{cell, cell}, cell);
+    grid_.bin(x_.data(), y_.data(), static_cast<std::int64_t>(x_.size()));
   }
-  return false;
-}
+
+  /// Index (in the list given) of the point nearest to p.
+  std::size_t find(Vec2 p) const {
+    const int cx = grid_.cell_x(p.x), cy = grid_.cell_y(p.y);
+    const int rings = std::max(grid_.nx(), grid_.ny());
+    std::size_t best = 0;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (int r = 0; r <= rings; ++r) {
+      for (int yy = cy - r; yy <= cy + r; ++yy) {
+        if (yy < 0 || yy >= grid_.ny()) continue;
+        const bool edge_row = yy == cy - r || yy == cy + r;
+        for (int xx = cx - r; xx <= cx + r; xx += edge_row ? 1 : 2 * r) {
+          if (xx >= 0 && xx < grid_.nx()) {
+            for (auto* q = grid_.cell_begin(xx, yy); q != grid_.cell_end(xx, yy); ++q) {
+              const auto j = static_cast<std::size_t>(*q);
+              const double d = norm(Vec2{x_[j], y_[j]} - p);
+              if (d < best_d || (d == best_d && j < best)) best_d = d, best = j;
+            }
+          }
+        }
+      }
+      // Points of ring r + 1 and beyond are at least r cells from p (clamped to the grid,
+      // p outside it is nearer to no point than that either).
+      if (best_d < r * cell_) break;
+    }
+    return first_ + best;
+  }
+
+ private:
+  std::size_t first_ = 0;
+  double cell_ = 0.0;
+  std::vector<double> x_, y_;
+  CellGrid grid_;
+};
 
 /// The fluid particles in runs along gravity (-y): each lattice column split where rows are
 /// not DL apart; each run sorted from its bottom up.
@@ -116,19 +144,18 @@ void set_hydrostatic_state(std::vector<ParticleSeed>& fluid, const CaseSpec& spe
 
 }  // namespace
 
-Scene build_scene(const CaseSpec& spec) {
+Scene build_scene(const CaseSpec& spec, const std::function<void(double)>& progress) {
   Scene scene;
   const double dl = spec.dl;
   const double re = spec.re();
-  // Ghost rows k = 1..K with k DL < re: every wall particle sees a full kernel behind it.
-  scene.ghost_layers = static_cast<int>(std::ceil(re / dl - 1e-9)) - 1;
+  scene.ghost_layers = ghost_layer_count(spec);
   scene.lattice = square_lattice_constants(dl, re);
 
   // ---- walls: one wall row and K ghost rows parallel to each surface line
   std::vector<ParticleSeed> walls, ghosts;
   std::vector<std::int32_t> ghost_sources;
   std::vector<std::size_t> boundary_owner;  // wall spec of each boundary particle (walls, ghosts)
-  std::vector<WallGeometry> geometry;
+  const std::vector<WallGeometry> geometry = wall_geometries(spec);
   std::vector<std::size_t> ghost_owner;
   std::size_t body_wall_begin = 0, body_wall_end = 0, body_ghost_begin = 0, body_ghost_end = 0;
   std::size_t body_rows_begin = 0, body_rows_end = 0;
@@ -137,25 +164,17 @@ Scene build_scene(const CaseSpec& spec) {
   }
   for (std::size_t w = 0; w < spec.walls.size(); ++w) {
     const WallSpec& ws = spec.walls[w];
+    const WallGeometry& g = geometry[w];
     const bool is_body = spec.body && spec.body->wall == w;
     if (is_body) {
       body_wall_begin = walls.size();
       body_ghost_begin = ghosts.size();
       body_rows_begin = scene.wall_rows.size();
     }
-    WallGeometry g;
-    static_cast<WallSurface&>(g) = wall_surface(ws.points, ws.closed, ws.solid_on_right);
-    g.thickness = (scene.ghost_layers + 1) * dl;
     const std::size_t first_wall = walls.size();
+    NearestPoint nearest;  // over this wall's wall row, once it is laid
     for (int k = 0; k <= scene.ghost_layers; ++k) {
-      std::vector<Vec2> row;
-      try {
-        row = offset_polyline(ws.points, ws.closed, g.normals, (k + 0.5) * dl);
-      } catch (const std::domain_error& e) {
-        throw CaseError(ws.where, wall_label(spec, w) + ": " + e.what() + " (row " +
-                                      std::to_string(k) + " at " + std::to_string(k + 0.5) +
-                                      " DL behind the surface)");
-      }
+      const std::vector<Vec2> row = wall_row(spec, geometry, w, k);
       for (const auto& s : sample_polyline(row, ws.closed, dl)) {
         if (k == 0) {
           walls.push_back({s.position, {}});
@@ -163,23 +182,17 @@ Scene build_scene(const CaseSpec& spec) {
         }
         // The ghost copies the wall particle nearest to its foot on the wall row.
         const Vec2 foot = s.position - g.normals[s.segment] * (k * dl);
-        std::size_t best = first_wall;
-        double best_d = std::numeric_limits<double>::infinity();
-        for (std::size_t i = first_wall; i < walls.size(); ++i) {
-          const double d = norm(walls[i].position - foot);
-          if (d < best_d) best_d = d, best = i;
-        }
         ghosts.push_back({s.position, {}});
-        ghost_sources.push_back(static_cast<std::int32_t>(best));
+        ghost_sources.push_back(static_cast<std::int32_t>(nearest.find(foot)));
         ghost_owner.push_back(w);
       }
       if (k == 0) {
+        nearest = NearestPoint(walls, first_wall, dl);
         const auto row_segments = polyline_segments(row, ws.closed);
         scene.wall_rows.insert(scene.wall_rows.end(), row_segments.begin(), row_segments.end());
         for (std::size_t i = first_wall; i < walls.size(); ++i) boundary_owner.push_back(w);
       }
     }
-    geometry.push_back(std::move(g));
     if (is_body) {
       body_wall_end = walls.size();
       body_ghost_end = ghosts.size();
@@ -188,82 +201,26 @@ Scene build_scene(const CaseSpec& spec) {
   }
   boundary_owner.insert(boundary_owner.end(), ghost_owner.begin(), ghost_owner.end());
 
-  // ---- fluid: lattice points inside any fluid shape, away from wall surfaces
-  std::map<std::pair<long, long>, std::pair<Vec2, std::size_t>>
-      lattice;  // (i, j) -> velocity, region
-  for (std::size_t f = 0; f < spec.fluids.size(); ++f) {
-    const auto& poly = spec.fluids[f].polygon;
-    Vec2 lo = poly[0], hi = poly[0];
-    for (const Vec2 p : poly) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    }
-    const Vec2 o = spec.lattice_origin;
-    const long i0 = static_cast<long>(std::floor((lo.x - o.x) / dl)) - 1;
-    const long i1 = static_cast<long>(std::ceil((hi.x - o.x) / dl)) + 1;
-    const long j0 = static_cast<long>(std::floor((lo.y - o.y) / dl)) - 1;
-    const long j1 = static_cast<long>(std::ceil((hi.y - o.y) / dl)) + 1;
-    if ((i1 - i0) * (j1 - j0) > 200'000'000L) {
-      throw CaseError(spec.fluids[f].where, fluid_label(spec, f) +
-                                                ": more than 2e8 lattice points; "
-                                                "check the spacing and the shape");
-    }
-    std::int64_t placed = 0;
-    for (long j = j0; j <= j1; ++j) {
-      for (long i = i0; i <= i1; ++i) {
-        const Vec2 p{o.x + (i + 0.5) * dl, o.y + (j + 0.5) * dl};
-        if (!polygon_contains(poly, p)) continue;
-        ++placed;
-        lattice.emplace(std::make_pair(i, j), std::make_pair(spec.fluids[f].velocity, f));
-      }
-    }
-    if (placed == 0) {
-      throw CaseError(spec.fluids[f].where, fluid_label(spec, f) +
-                                                ": the shape holds no lattice point at spacing " +
-                                                std::to_string(dl) + " m");
-    }
+  // ---- fluid: lattice points inside any fluid shape, away from wall surfaces, with a wall
+  // below them (scene/FluidLattice.h)
+  if (fluid_lattice_points(spec) > 2.0e8) {
+    throw CaseError(spec.fluids[0].where,
+                    "the fluid shapes' box holds more than 2e8 lattice points at spacing " +
+                        std::to_string(dl) + " m; check the spacing and the shapes");
   }
   std::vector<ParticleSeed> fluid;
-  std::vector<std::size_t> fluid_region;
-  // Points exactly DL/2 from a surface (the usual case) must stay: allow for rounding.
-  const double clearance = spec.wall_clearance * dl * (1.0 - 1e-6);
-  for (const auto& [ij, vf] : lattice) {
-    const Vec2 p{spec.lattice_origin.x + (ij.first + 0.5) * dl,
-                 spec.lattice_origin.y + (ij.second + 0.5) * dl};
-    // A closed wall is a solid body: it displaces the fluid inside it.
-    bool displaced = false;
-    for (std::size_t w = 0; w < geometry.size() && !displaced; ++w) {
-      displaced = geometry[w].closed && polygon_contains(spec.walls[w].points, p);
-    }
-    if (displaced) {
-      ++scene.displaced_fluid;
-      continue;
-    }
-    bool keep = true;
-    for (std::size_t w = 0; w < geometry.size() && keep; ++w) {
-      const double sd = signed_distance(geometry[w], p);
-      if (sd < 0.0 && -sd < clearance) keep = false;  // fluid side, too close: trimmed
-      if (sd >= 0.0 && sd < geometry[w].thickness) {
-        throw CaseError(spec.fluids[vf.second].where,
-                        fluid_label(spec, vf.second) + " overlaps " + wall_label(spec, w) +
-                            " (line " + std::to_string(spec.walls[w].where.line) + "): fluid at " +
-                            at(p) + " is inside the wall");
-      }
-    }
-    if (!keep) {
-      ++scene.trimmed_fluid;
-      continue;
-    }
-    fluid.push_back({p, vf.first});
-    fluid_region.push_back(vf.second);
-  }
-  if (fluid.empty()) {
-    throw CaseError(spec.fluids[0].where, "no fluid particle is left after keeping " +
-                                              std::to_string(spec.wall_clearance) +
-                                              " DL away from the walls");
-  }
+  double area = 0.0;
+  for (const auto& f : spec.fluids) area += std::abs(signed_area(f.polygon));
+  fluid.reserve(static_cast<std::size_t>(area / (dl * dl) * 1.05) + 16);  // no regrowth
+  const FluidScan scan = scan_fluid_lattice(
+      spec, geometry, 1,
+      [&](Vec2 p, std::size_t region) {
+        fluid.push_back({p, spec.fluids[region].velocity});
+      },
+      progress);
+  scene.trimmed_fluid = scan.trimmed;
+  scene.displaced_fluid = scan.displaced;
 
-  // ---- containment: every fluid particle has a wall below it (along gravity)
   Vec2 lo = fluid[0].position, hi = lo;
   auto grow = [&](Vec2 p) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
@@ -271,23 +228,18 @@ Scene build_scene(const CaseSpec& spec) {
   };
   for (const auto& s : walls) grow(s.position);
   for (const auto& s : ghosts) grow(s.position);
-  for (const auto& s : fluid) grow(s.position);
   const double g = norm(spec.gravity);
   if (g > 0.0) {
     const Vec2 down = spec.gravity * (1.0 / g);
-    const double reach = 2.0 * norm(hi - lo) + dl;
     double top = std::numeric_limits<double>::infinity(), bottom = -top;
-    for (std::size_t k = 0; k < fluid.size(); ++k) {
-      const Vec2 p = fluid[k].position;
-      top = std::min(top, dot(p, down));
-      bottom = std::max(bottom, dot(p, down));
-      if (!has_wall_along(geometry, p, down, reach)) {
-        throw CaseError(spec.fluids[fluid_region[k]].where,
-                        fluid_label(spec, fluid_region[k]) + " lies outside every wall: fluid at " +
-                            at(p) + " has no wall below it");
-      }
+    for (const auto& f : fluid) {
+      grow(f.position);
+      top = std::min(top, dot(f.position, down));
+      bottom = std::max(bottom, dot(f.position, down));
     }
     scene.fluid_height = bottom - top + dl;
+  } else {
+    for (const auto& f : fluid) grow(f.position);
   }
 
   // ---- walls must not overlap one another

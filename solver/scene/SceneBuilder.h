@@ -13,6 +13,7 @@
 /// and points closer than wall_clearance x DL to a wall surface.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -54,6 +55,8 @@ struct Scene {
 
 /// Builds the scene; throws CaseError when the geometry makes no sense (fluid inside a wall or
 /// outside every wall, walls overlapping each other, corners too sharp for the wall rows).
-Scene build_scene(const CaseSpec& spec);
+/// progress(fraction done), if given, is called now and then while the fluid is laid out (the
+/// long part of building a big scene).
+Scene build_scene(const CaseSpec& spec, const std::function<void(double)>& progress = {});
 
 }  // namespace wcmps
