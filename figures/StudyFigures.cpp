@@ -31,6 +31,7 @@
 #include "OffscreenDisplay.h"
 #include "core/Error.h"
 #include "core/ExitCodes.h"
+#include "core/TerminalProgress.h"
 #include "io/AtomicFile.h"
 #include "io/FrameReader.h"
 #include "io/RunDirectory.h"
@@ -772,6 +773,7 @@ int figures_command(const FiguresOptions& o) {
   vtkSMPTools::SetBackend("STDThread");
 
   nlohmann::json files = nlohmann::json::array();
+  TerminalProgress progress;  // while the frames are read and their products computed
   try {
     std::error_code ec;
     fs::create_directories(out, ec);
@@ -783,6 +785,11 @@ int figures_command(const FiguresOptions& o) {
       std::vector<vtkSmartPointer<vtkPolyData>> frames;
       std::vector<FrameData> blocks;
       for (const SeriesEntry* e : picked[k]) {
+        progress.show("figures: run " + std::to_string(k + 1) + " of " +
+                          std::to_string(runs.size()) + ", reading frame " +
+                          std::to_string(frames.size() + 1) + " of " +
+                          std::to_string(picked[k].size()),
+                      true);
         frames.push_back(read_frame_file(r.dir / e->file));
         blocks.push_back(block_of(frames.back(), r.dir / e->file, e->time));
       }
@@ -793,10 +800,16 @@ int figures_command(const FiguresOptions& o) {
           x, y,
           figures::plot_area_size(o.width, o.height, 2, static_cast<int>(blocks.size()), true));
       r.window = {x[0], x[1], y[0], y[1]};
-      for (size_t i = 0; i < frames.size(); ++i)
+      for (size_t i = 0; i < frames.size(); ++i) {
+        progress.show("figures: run " + std::to_string(k + 1) + " of " +
+                          std::to_string(runs.size()) + ", surface, sections and grid of frame " +
+                          std::to_string(i + 1) + " of " + std::to_string(frames.size()),
+                      true);
         add_products(blocks[i], frames[i], r.spec, r.window);
+      }
       r.frames = std::move(blocks);
     }
+    progress.done();
     auto emit = [&](Figure fig, const std::string& name, const std::string& kind, const RunData& r,
                     const std::string& shows) {
       const figures::Layout layout = render_png(fig, out / name);

@@ -15,7 +15,9 @@
 #include "app/StopSignals.h"
 #include "core/Error.h"
 #include "core/ExitCodes.h"
+#include "core/Memory.h"
 #include "core/Parallel.h"
+#include "core/TerminalProgress.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/BodyCsv.h"
@@ -26,6 +28,8 @@
 #include "io/VtpSeriesWriter.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
+#include "scene/SizeEstimate.h"
+#include "simulation/MemoryEstimate.h"
 #include "simulation/Runner.h"
 #include "simulation/Simulation.h"
 #include "simulation/WaveGauges.h"
@@ -52,27 +56,12 @@ bool summary_says_completed(const fs::path& dir, std::int64_t steps) {
   return t != j.end() && t->is_object() && t->value("steps", std::int64_t{-1}) == steps;
 }
 
-std::string duration(double s) {
-  char buf[32];
-  if (s < 0) return "?";
-  if (s < 60) {
-    std::snprintf(buf, sizeof buf, "%.1f s", s);
-  } else if (s < 3600) {
-    std::snprintf(buf, sizeof buf, "%d min %02d s", static_cast<int>(s) / 60,
-                  static_cast<int>(s) % 60);
-  } else {
-    std::snprintf(buf, sizeof buf, "%d h %02d min", static_cast<int>(s) / 3600,
-                  static_cast<int>(s) % 3600 / 60);
-  }
-  return buf;
-}
-
 std::string progress_line(const Progress& p) {
   char buf[256];
   std::snprintf(
       buf, sizeof buf, "t %.4f/%.4f s | step %lld | dt %.3g s | %lld particles | wall %s | left %s",
       p.time, p.end_time, static_cast<long long>(p.step), p.dt, static_cast<long long>(p.particles),
-      duration(p.wall_seconds).c_str(), duration(p.eta_seconds).c_str());
+      format_duration(p.wall_seconds).c_str(), format_duration(p.eta_seconds).c_str());
   return buf;
 }
 
@@ -145,6 +134,49 @@ class LoggedSink : public FrameSink {
   CheckpointStore& checkpoints_;
   const std::string& case_text_;
 };
+
+/// Cases of at most this many particles `check` builds, running every check on them, in about
+/// half a second (docs/running.md, "The size of a run": 0.37 s for 316,184 particles); larger
+/// ones it checks on their shapes alone, to answer in well under a second whatever the size.
+constexpr double kCheckBuildParticles = 400'000;
+
+/// A case's size from its shapes alone (scene/SizeEstimate.h, simulation/MemoryEstimate.h).
+struct Sizing {
+  ParticleEstimate counts;
+  MemoryEstimate memory;
+};
+
+Sizing size_case(const CaseSpec& spec) {
+  Sizing s;
+  s.counts = estimate_particles(spec);
+  s.memory = estimate_memory(spec, s.counts, static_cast<double>(current_rss_bytes()));
+  return s;
+}
+
+/// Empty when a run of the case fits in its memory limit: `--max-memory`, else [run]
+/// max_memory, else what the machine has available; else the message that refuses it.
+std::string memory_refusal(const CaseSpec& spec, const Sizing& s,
+                           std::optional<std::uint64_t> max_memory) {
+  char particles[64], spacing[32];
+  std::snprintf(particles, sizeof particles, "%.3g", s.counts.total());
+  std::snprintf(spacing, sizeof spacing, "%g", spec.dl);
+  const std::string need = spec.file.file + ": a run of the case needs about " +
+                           format_bytes(s.memory.total()) + " at its peak (" + particles +
+                           " particles at [particles] spacing " + spacing + " m)";
+  const std::string advice =
+      "; coarsen the spacing (the memory goes as 1/spacing^2) or shrink the shapes";
+  if (max_memory || spec.max_memory) {
+    const double limit = static_cast<double>(max_memory ? *max_memory : *spec.max_memory);
+    if (s.memory.total() <= limit) return {};
+    return need + ", more than the limit of " + format_bytes(limit) + " set by " +
+           (max_memory ? "--max-memory" : "[run] max_memory") + advice;
+  }
+  const double available = static_cast<double>(available_memory_bytes());
+  if (available <= 0.0 || s.memory.added() <= available) return {};
+  return need + ", and the machine has " + format_bytes(available) +
+         " available beside what the program holds" + advice +
+         ", or give a limit with --max-memory (or [run] max_memory) to run it anyway";
+}
 
 void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
   const ParticleSet& ps = scene.particles;
@@ -226,13 +258,31 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
 
 }  // namespace
 
-int check_command(const std::string& case_file) {
+int check_command(const std::string& case_file, std::optional<std::uint64_t> max_memory) {
   try {
     const CaseSpec spec = load_case(case_file);
-    const Scene scene = build_scene(spec);
-    print_scene(std::cout, spec, scene);
-    std::cout << "ok: " << (case_file.empty() ? std::string(kEmbeddedCasePath) : case_file)
-              << " is a valid case\n";
+    const Sizing size = size_case(spec);
+    std::cout << describe_estimate(size.counts, size.memory);
+    const std::string refusal = memory_refusal(spec, size, max_memory);
+    if (!refusal.empty()) {
+      std::cerr << "wcmps: error: " << refusal << '\n';
+      return exit_code::kBadCase;
+    }
+    const std::string name = case_file.empty() ? std::string(kEmbeddedCasePath) : case_file;
+    if (size.counts.total() <= kCheckBuildParticles) {
+      const Scene scene = build_scene(spec);
+      print_scene(std::cout, spec, scene);
+      std::cout << "ok: " << name << " is a valid case\n";
+    } else {
+      std::cout << "ok: " << name
+                << " is a valid case as far as checked without its particles: its shapes, "
+                   "their corners, and 1 lattice point in "
+                << size.counts.stride << " x " << size.counts.stride
+                << " for fluid inside a wall or with no wall below it. The walls overlapping one "
+                   "another and the other lattice points are "
+                   "checked when `wcmps run` builds the particles (check builds cases of up to "
+                << static_cast<long>(kCheckBuildParticles) << " particles).\n";
+    }
     return exit_code::kOk;
   } catch (const CaseError& e) {
     std::cerr << "wcmps: error: " << e.what() << '\n';
@@ -244,6 +294,7 @@ int run_command(const RunOptions& o) {
   const bool restart = !o.restart_dir.empty();
   CaseSpec spec;
   std::optional<Scene> scene;
+  Sizing size;
   fs::path dir;
   try {
     if (restart) {
@@ -274,7 +325,19 @@ int run_command(const RunOptions& o) {
       }
       spec.settle_time = *o.settle_time;
     }
-    scene = build_scene(spec);
+    size = size_case(spec);
+    if (!restart) std::cout << describe_estimate(size.counts, size.memory) << std::flush;
+    const std::string refusal = memory_refusal(spec, size, o.max_memory);
+    if (!refusal.empty()) {
+      std::cerr << "wcmps: error: " << refusal << '\n';
+      return exit_code::kBadCase;
+    }
+    TerminalProgress building;
+    scene = build_scene(spec, [&](double f) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "building the scene: fluid %3.0f %%", 100.0 * f);
+      building.show(buf, f >= 1.0);
+    });
   } catch (const CaseError& e) {
     std::cerr << "wcmps: error: " << e.what() << '\n';
     return exit_code::kBadCase;
@@ -311,6 +374,7 @@ int run_command(const RunOptions& o) {
       log << "\nwcmps " << kVersion << " restart of " << dir.string() << '\n';
     } else {
       log << "wcmps " << kVersion << " run of " << spec.file.file << '\n';
+      log << describe_estimate(size.counts, size.memory);
       print_scene(log, spec, *scene);
     }
     log << "threads             " << thread_count() << '\n' << std::flush;
@@ -362,14 +426,8 @@ int run_command(const RunOptions& o) {
       std::cerr << "wcmps: " << buf << '\n';
     }
 
-    std::size_t shown = 0;
-    auto progress = [&](const Progress& p) {
-      if (!tty) return;
-      const std::string s = progress_line(p);
-      std::fprintf(stderr, "\r%s%*s", s.c_str(),
-                   static_cast<int>(shown > s.size() ? shown - s.size() : 0), "");
-      shown = s.size();
-    };
+    TerminalProgress terminal(tty);
+    auto progress = [&](const Progress& p) { terminal.show(progress_line(p)); };
     std::optional<InstabilityReport> unstable;
     RunStats stats;
     catch_stop_signals();
@@ -379,9 +437,12 @@ int run_command(const RunOptions& o) {
       unstable = e.report();
       stats = runner.stats();
     }
-    if (tty && shown > 0) std::fputc('\n', stderr);
+    terminal.done();
     RunSummary summary = summarize(spec, *sim, stats, unstable);
     summary.restarted_from = restarted_from;
+    summary.memory_estimate = restart ? 0.0 : size.memory.total();
+    summary.memory_peak = static_cast<double>(peak_rss_bytes());
+    summary.memory_program = size.memory.program;
     write_file_atomically(dir / RunFiles::kSummary, summary.to_json().dump(2) + "\n");
     log << summary.to_text() << std::flush;
     if (unstable) {

@@ -29,6 +29,7 @@
 
 #include "core/Error.h"
 #include "core/ExitCodes.h"
+#include "core/TerminalProgress.h"
 #include "core/Version.h"
 #include "io/AtomicFile.h"
 #include "io/FrameReader.h"
@@ -222,6 +223,8 @@ int post_command(const PostOptions& o) {
   Stopwatch clock;
   double grid_bounds[6] = {1, -1, 1, -1, 0, 0};
 
+  TerminalProgress progress;
+  const auto started = std::chrono::steady_clock::now();
   try {
     for (size_t k = 0; k < frames.size(); ++k) {
       const SeriesEntry& e = *frames[k];
@@ -355,6 +358,12 @@ int post_command(const PostOptions& o) {
       // between them.
       const WaterCavity cavity(spec);
       for (const auto& e : series) {
+        progress.show(
+            "post: cavity of frame " + std::to_string(&e - series.data() + 1) + " of " +
+            std::to_string(series.size()) + ", " +
+            format_duration(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()) +
+            " so far");
         clock.start();
         const fs::path frame_file = run / e.file;
         const CavityMeasure m = measure_cavity(cavity, read_frame_file(frame_file), frame_file);
@@ -363,6 +372,7 @@ int post_command(const PostOptions& o) {
                         m.points ? num(m.first.y) : ""});
         clock.stop("cavity");
       }
+      progress.done();
       std::cout << "cavity: " << series.size() << " frames done\n";
     }
 

@@ -15,6 +15,7 @@
 #include "app/Commands.h"
 #include "app/Post.h"
 #include "core/ExitCodes.h"
+#include "core/Memory.h"
 #include "core/Version.h"
 
 int main(int argc, char** argv) {
@@ -59,11 +60,21 @@ int main(int argc, char** argv) {
   run_cmd->get_option("case")->excludes(restart_opt);
   run_cmd->get_option("--output")->excludes(restart_opt);
 
+  // --max-memory of run and check: a size ("6G", "500 MB"), parsed after the command line.
+  std::string max_memory;
+  auto add_max_memory = [&](CLI::App* cmd) {
+    return cmd->add_option("--max-memory", max_memory,
+                           "the most memory the run may take, e.g. 6G or \"500 MB\" (default: "
+                           "[run] max_memory, else what the machine has available)");
+  };
+  auto* run_mem_opt = add_max_memory(run_cmd);
+
   std::string check_file;
   auto* check_cmd = app.add_subcommand("check",
                                        "Validate a case and print what it would build, "
                                        "without running it");
   check_cmd->add_option("case", check_file, "case file (TOML)")->required();
+  auto* check_mem_opt = add_max_memory(check_cmd);
 
   wcmps::PostOptions post;
   std::vector<double> post_times;
@@ -112,8 +123,18 @@ int main(int argc, char** argv) {
     return code == 0 ? wcmps::exit_code::kOk : wcmps::exit_code::kUsage;
   }
 
+  std::optional<std::uint64_t> memory_limit;
+  if (*run_mem_opt || *check_mem_opt) {
+    memory_limit = wcmps::parse_byte_size(max_memory);
+    if (!memory_limit || *memory_limit == 0) {
+      std::cerr << "wcmps: error: --max-memory " << max_memory
+                << ": expected a size such as 6G, \"6 GiB\" or \"500MB\"\n";
+      return wcmps::exit_code::kUsage;
+    }
+  }
   try {
     if (*run_cmd) {
+      run.max_memory = memory_limit;
       if (*end_opt) run.end_time = end_time;
       if (*settle_opt) run.settle_time = settle_time;
       if (*thr_opt) run.threads = threads;
@@ -133,7 +154,7 @@ int main(int argc, char** argv) {
       }
       return wcmps::figures_command(figs);
     }
-    return wcmps::check_command(check_file);
+    return wcmps::check_command(check_file, memory_limit);
   } catch (const std::exception& e) {
     std::cerr << "wcmps: internal error: " << e.what() << '\n';
     return wcmps::exit_code::kInternal;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/Memory.h"
 #include "core/Parallel.h"
 #include "core/Version.h"
 
@@ -41,6 +42,9 @@ nlohmann::json RunSummary::to_json() const {
                         {"particles_affected", instability->particles_affected}};
   }
   j["particles"] = {{"fluid", fluid}, {"wall", wall}, {"ghost", ghost}, {"total", particles()}};
+  j["memory"] = {{"estimate_bytes", memory_estimate},
+                 {"peak_rss_bytes", memory_peak},
+                 {"program_bytes", memory_program}};
   j["method"] = {{"DL", dl}, {"re", re}, {"n0", n0}, {"lambda", lambda}, {"c0", c0}};
   j["time"] = {{"step_rule", time_step},
                {"end", end_time},
@@ -118,6 +122,12 @@ std::string RunSummary::to_text() const {
          static_cast<long long>(settle_steps), stats.settle_seconds);
   }
   line("frames              %lld", static_cast<long long>(stats.frames));
+  if (memory_peak > 0.0) {
+    line("memory              peak %s%s", format_bytes(memory_peak).c_str(),
+         memory_estimate > 0.0
+             ? (" (estimated " + format_bytes(memory_estimate) + " before building)").c_str()
+             : "");
+  }
   line("wall collisions     %lld particle-steps", static_cast<long long>(wall_collisions));
   line(
       "wall time           %.3f s (%.3f s writing frames, %.3f s writing %lld checkpoints), %d "

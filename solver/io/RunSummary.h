@@ -36,6 +36,10 @@ struct RunSummary {
   std::vector<SectionSpec> sections;  ///< measuring sections of the case
   std::optional<BodySample> body;     ///< the block's state at the end
   std::string restarted_from;         ///< the checkpoint a continued run started from
+  /// Memory (bytes): the estimate made before building (simulation/MemoryEstimate.h; 0 on a
+  /// restart, which makes none), the process's peak resident memory (VmHWM) and what it held
+  /// before building the scene.
+  double memory_estimate = 0.0, memory_peak = 0.0, memory_program = 0.0;
 
   std::int64_t particles() const { return fluid + wall + ghost; }
   /// All particles times steps, per wall second of stepping (frame output excluded).

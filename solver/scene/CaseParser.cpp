@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/Memory.h"
 #include "physics/SlideMotion.h"
 #include "scene/Geometry.h"
 
@@ -693,6 +694,24 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     TableReader r(section(root, "neighbours", empty), "[neighbours]", path);
     c.neighbour_skin = r.number("skin", 0.2, 0.0, 2.0, true);
     c.sort_interval = static_cast<int>(r.integer("sort_interval", 50, 0, 1000000));
+    r.finish();
+  }
+  {
+    TableReader r(section(root, "run", empty), "[run]", path);
+    if (const toml::node* n = r.get("max_memory")) {
+      std::optional<std::uint64_t> bytes;
+      if (const auto given = n->value_exact<std::string>()) {
+        bytes = parse_byte_size(*given);
+      } else if (const auto v = n->value_exact<std::int64_t>(); v && *v > 0) {
+        bytes = static_cast<std::uint64_t>(*v);
+      }
+      if (!bytes || *bytes == 0) {
+        r.fail(*n, "max_memory",
+               "expected a size such as \"6 GiB\" or \"500MB\", or a positive number of "
+               "bytes");
+      }
+      c.max_memory = bytes;
+    }
     r.finish();
   }
   {

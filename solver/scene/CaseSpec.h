@@ -216,6 +216,11 @@ struct CaseSpec {
       0.2;  ///< list cutoff = re + skin x DL; lists kept while particles move < skin/2
   int sort_interval = 50;  ///< steps between reorderings of fluid particles by cell
 
+  // [run]
+  /// The most memory a run of the case may take (bytes); unset: what the machine has available
+  /// (`--max-memory` overrides both).
+  std::optional<std::uint64_t> max_memory;
+
   // [stability]
   double max_density_ratio = 1.2;  ///< n*/n0 above this stops the run
   std::optional<std::pair<Vec2, Vec2>> domain;

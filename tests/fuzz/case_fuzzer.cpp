@@ -1,10 +1,10 @@
 /// @file case_fuzzer.cpp
 /// @brief libFuzzer target over the case-file parser and validator: parse_case_text, then
-/// build_scene (the geometric checks: fluid outside walls, overlapping walls, a block that does
-/// not fit, ...). Every input must either give a case or throw CaseError; anything else (a
-/// crash, another exception, a leak, undefined behaviour, a hang) is a finding. Built with
-/// clang's -fsanitize=fuzzer,address,undefined by tests/fuzz/CMakeLists.txt (docs/checkpoints.md,
-/// "Fuzzing").
+/// estimate_particles (any size) and build_scene (the geometric checks: fluid outside walls,
+/// overlapping walls, a block that does not fit, ...). Every input must either give a case or throw
+/// CaseError; anything else (a crash, another exception, a leak, undefined behaviour, a hang) is a
+/// finding. Built with clang's -fsanitize=fuzzer,address,undefined by tests/fuzz/CMakeLists.txt
+/// (docs/checkpoints.md, "Fuzzing").
 
 #include <cmath>
 #include <cstddef>
@@ -14,6 +14,7 @@
 #include "core/Error.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
+#include "scene/SizeEstimate.h"
 
 namespace {
 
@@ -43,6 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const wcmps::CaseSpec spec = wcmps::parse_case_text(text, "fuzz.toml");
+    // The estimate is made for any size (it samples the lattice): always.
+    (void)wcmps::estimate_particles(spec);
     if (small_enough(spec)) (void)wcmps::build_scene(spec);
   } catch (const wcmps::CaseError&) {
     // The answer to a bad case file.
