@@ -9,12 +9,6 @@
 namespace wcmps {
 namespace {
 
-std::string at(Vec2 p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", p.x, p.y);
-  return buf;
-}
-
 /// Does the ray from p along direction g hit the fluid side of a wall surface?
 bool has_wall_along(const std::vector<WallGeometry>& walls, Vec2 p, Vec2 g, double reach) {
   const Vec2 q = p + g * reach;
@@ -87,6 +81,12 @@ std::vector<Vec2> wall_row(const CaseSpec& spec, const std::vector<WallGeometry>
     throw CaseError(ws.where, wall_label(spec, w) + ": " + e.what() + " (row " + std::to_string(k) +
                                   " at " + std::to_string(k + 0.5) + " DL behind the surface)");
   }
+}
+
+std::string point_text(Vec2 p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", p.x, p.y);
+  return buf;
 }
 
 std::string wall_label(const CaseSpec& spec, std::size_t w) {
@@ -164,7 +164,7 @@ FluidScan scan_fluid_lattice(const CaseSpec& spec, const std::vector<WallGeometr
           throw CaseError(spec.fluids[region].where,
                           fluid_label(spec, region) + " overlaps " + wall_label(spec, w) +
                               " (line " + std::to_string(spec.walls[w].where.line) +
-                              "): fluid at " + at(p) + " is inside the wall");
+                              "): fluid at " + point_text(p) + " is inside the wall");
         }
         if (trimmed) break;
       }
@@ -175,7 +175,7 @@ FluidScan scan_fluid_lattice(const CaseSpec& spec, const std::vector<WallGeometr
       if (g > 0.0 && !has_wall_along(geometry, p, down, reach)) {
         throw CaseError(spec.fluids[region].where, fluid_label(spec, region) +
                                                        " lies outside every wall: fluid at " +
-                                                       at(p) + " has no wall below it");
+                                                       point_text(p) + " has no wall below it");
       }
       ++scan.kept;
       if (keep) keep(p, region);

@@ -31,6 +31,9 @@ std::vector<WallGeometry> wall_geometries(const CaseSpec& spec);
 std::vector<Vec2> wall_row(const CaseSpec& spec, const std::vector<WallGeometry>& geometry,
                            std::size_t w, int k);
 
+/// How messages name a point: "(x, y)" to six digits.
+std::string point_text(Vec2 p);
+
 /// How messages name a wall or a fluid: as the case file does, or by its place in the spec.
 std::string wall_label(const CaseSpec& spec, std::size_t w);
 std::string fluid_label(const CaseSpec& spec, std::size_t f);

@@ -12,12 +12,6 @@
 namespace wcmps {
 namespace {
 
-std::string at(Vec2 p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g)", p.x, p.y);
-  return buf;
-}
-
 /// The nearest of the points [first, end) of a list to a given point, through a grid of cells
 /// one spacing wide over them: rings of cells around the point's cell are searched outwards
 /// until the nearest found is closer than the next ring can be. Equal distances go to the lower
@@ -266,7 +260,8 @@ Scene build_scene(const CaseSpec& spec, const std::function<void(double)>& progr
               const std::size_t a = boundary_owner[i], b = boundary_owner[j];
               throw CaseError(spec.walls[std::max(a, b)].where,
                               wall_label(spec, std::max(a, b)) + " overlaps " +
-                                  wall_label(spec, std::min(a, b)) + " near " + at({bx[i], by[i]}) +
+                                  wall_label(spec, std::min(a, b)) + " near " +
+                                  point_text({bx[i], by[i]}) +
                                   "; join touching walls into one polyline");
             }
           }
@@ -283,7 +278,8 @@ Scene build_scene(const CaseSpec& spec, const std::function<void(double)>& progr
       const Vec2 p = s.position;
       if (p.x < scene.domain_lo.x || p.y < scene.domain_lo.y || p.x > scene.domain_hi.x ||
           p.y > scene.domain_hi.y) {
-        throw CaseError(spec.file, "[stability] domain does not contain the fluid at " + at(p));
+        throw CaseError(spec.file,
+                        "[stability] domain does not contain the fluid at " + point_text(p));
       }
     }
   } else {

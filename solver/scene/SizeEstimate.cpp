@@ -38,9 +38,13 @@ ParticleEstimate estimate_particles(const CaseSpec& spec) {
   for (const auto& f : spec.fluids) std::for_each(f.polygon.begin(), f.polygon.end(), grow);
 
   const double points = fluid_lattice_points(spec);
-  e.stride = std::max<std::int64_t>(
-      1,
-      static_cast<std::int64_t>(std::ceil(std::sqrt(points / ParticleEstimate::kScannedPoints))));
+  double edges = 0.0;  // tested per lattice point
+  for (const auto& f : spec.fluids) edges += static_cast<double>(f.polygon.size());
+  for (const auto& g : geometry) edges += 2.0 * static_cast<double>(g.surface.size());
+  const double scanned = std::min(ParticleEstimate::kScannedPoints,
+                                  ParticleEstimate::kEdgeTests / std::max(edges, 1.0));
+  e.stride =
+      std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(std::sqrt(points / scanned))));
   const FluidScan scan = scan_fluid_lattice(spec, geometry, e.stride, {});
   e.fluid = static_cast<double>(scan.kept) * static_cast<double>(e.stride) *
             static_cast<double>(e.stride);

@@ -5,7 +5,8 @@
 /// The walls' rows are counted from their lengths the way sample_polyline lays them (exact,
 /// and corners too sharp for the rows are found as the builder finds them). The fluid is the
 /// builder's own scan of the lattice (scene/FluidLattice.h) on every s-th point in x and y,
-/// with s chosen so that at most kScannedPoints are tested: its count times s^2 (exact for
+/// with s chosen so that at most kScannedPoints are tested (fewer for shapes of many edges,
+/// kEdgeTests): its count times s^2 (exact for
 /// s = 1), and its checks (fluid inside a wall, fluid with no wall below it) on the points it
 /// tested. In well under a second for any spacing, however many particles the case describes.
 
@@ -21,6 +22,10 @@ struct ParticleEstimate {
   /// against every shape); 1e6 keeps the estimate to a tenth of that, and the count's sampling
   /// error (about the perimeter's points over s, over the area's points) well under 1 %.
   static constexpr double kScannedPoints = 1.0e6;
+  /// ... and at most this many tests of a point against an edge (of a fluid shape, or of a wall
+  /// twice: its clearance and the ray below the point), for shapes of many vertices (a surveyed
+  /// bed): about 0.1 s.
+  static constexpr double kEdgeTests = 3.0e7;
 
   double fluid = 0.0, wall = 0.0, ghost = 0.0;  ///< estimated counts (doubles: may be huge)
   std::int64_t stride = 1;  ///< the fluid scanned on every stride-th point (1: counted exactly)
