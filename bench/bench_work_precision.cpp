@@ -272,6 +272,11 @@ std::string reference_key(const CaseSpec& spec, double time, const std::string& 
                 spec.step_mode == TimeStepMode::Fixed ? "fixed" : "courant",
                 spec.step_mode == TimeStepMode::Fixed ? spec.fixed_step : spec.courant);
   std::string k = key;
+  // The scheme the reference ran: a file made under other defaults is not reused.
+  k += " scheme=" + std::string(scheme_key(kNegativePressureSchemes, spec.negative_pressure)) +
+       "," + std::string(scheme_key(kNumberDensitySchemes, spec.number_density)) + "," +
+       std::string(scheme_key(kFreeSurfaceSchemes, spec.free_surface)) + "," +
+       std::string(scheme_key(kShiftingSchemes, spec.shifting));
   if (spec.settle_courant) {
     std::snprintf(key, sizeof key, " settle_courant=%g", *spec.settle_courant);
     k += key;
