@@ -9,7 +9,8 @@
 //       [--repeats 3] [--threads 2] [--out FILE.csv]
 //   build/bin/bench_work_precision --study hydrostatic ...
 //   build/bin/bench_work_precision --study caseI [--dl 0.01,0.007,0.005] [--reference-dl 0.0025]
-//       [--reference FILE.csv] [--section A] [--time 0.4] [--samples PREFIX] ...
+//       [--reference FILE.csv] [--reference-stabilisation default|3a85288] [--section A]
+//       [--time 0.4] [--samples PREFIX] ...
 //   bench/plot_work_precision.py FILE.csv ...   (log-log plot, PNG)
 //
 // - dambreak (cases/dambreak): rms error of the surge-front position Z = z/a against Martin &
@@ -18,9 +19,10 @@
 // - hydrostatic (cases/hydrostatic, 0.7 m of still water): rms of p - rho g (H - y) over the
 //   fluid particles below H - re, over t in [0.75, 1] s, as a fraction of rho g H.
 // - caseI (cases/caseI, the study's sliding block): no measurement to compare with, so a finer
-//   run is the reference (--reference-dl; its samples are kept in --reference FILE and reused
-//   while its settings match). Two errors at --time (0.4 s), a CSV row each:
-//   rms_eta: the wave eta(x) - eta(x, t = 0) at x = 0.05, 0.06 ... 2.00 m (the top of the water
+//   run is the reference (--reference-dl, with the defaults or --reference-stabilisation; its
+//   samples are kept in --reference FILE and reused while its settings match). Two errors at --time
+//   (0.4 s), a CSV row each: rms_eta: the wave eta(x) - eta(x, t = 0) at x = 0.05, 0.06 ... 2.00 m
+//   (the top of the water
 //     by the wave gauges' algorithm, operators/WaterSpan.h, against the run's own still-water
 //     level after settling, as a gauge zeroed at still water reads), rms of its difference from
 //     the reference's where both have water, over the reference's largest |eta - eta0|;
@@ -29,7 +31,8 @@
 //     stretch with coverage 0.5, the MPS weight's Shepard average), rms of |u - u_ref| at equal
 //     Y, over max |u_ref|.
 //   Its wall time includes the 0.5 s of settling (the block held) that every case I run does.
-//   --samples PREFIX writes each run's samples to PREFIX_<dl>_<rule>.csv, as the reference's.
+//   --samples PREFIX writes each run's samples to PREFIX_<dl>_<rule>[_3a85288].csv, as the
+//   reference's.
 //
 // Wall time: the stepping and any settling (scene building and the error's sampling excluded), the
 // median of --repeats runs; the runs are deterministic, so the error is that of every repeat (the
@@ -352,7 +355,8 @@ int usage(const char* msg) {
                "dambreak|hydrostatic|caseI [--dl D1,D2,...] [--steps courant,fixed,courant:C] "
                "[--gradients all|NAME,...] [--stabilisation default,3a85288] [--repeats N] "
                "[--threads N] [--out FILE.csv]\n"
-               "  caseI only: [--reference-dl D] [--reference FILE.csv] [--section NAME] "
+               "  caseI only: [--reference-dl D] [--reference FILE.csv] "
+               "[--reference-stabilisation default|3a85288] [--section NAME] "
                "[--time T] [--settle S] [--samples PREFIX]\n",
                msg);
   return 2;
@@ -363,6 +367,7 @@ int usage(const char* msg) {
 int main(int argc, char** argv) {
   std::string study, dls, steps = "courant,fixed", gradients, stabilisations = "default", out;
   std::string reference_path = "caseI_reference.csv", section_name = "A", samples_prefix;
+  std::string reference_stabilisation = "default";
   double reference_dl = 0.0025, sample_time = 0.4, settle = -1.0;
   int repeats = 3, threads = 2;
   for (int k = 1; k < argc; ++k) {
@@ -392,6 +397,8 @@ int main(int argc, char** argv) {
         reference_dl = std::stod(value());
       } else if (a == "--reference") {
         reference_path = value();
+      } else if (a == "--reference-stabilisation") {
+        reference_stabilisation = value();
       } else if (a == "--section") {
         section_name = value();
       } else if (a == "--time") {
@@ -412,6 +419,9 @@ int main(int argc, char** argv) {
   }
   const bool case_i_study = study == "caseI";
   if (repeats < 1 || threads < 1) return usage("--repeats and --threads must be >= 1");
+  if (reference_stabilisation != "default" && reference_stabilisation != "3a85288") {
+    return usage("--reference-stabilisation must be default or 3a85288");
+  }
   if (!(reference_dl > 0.0) || !(sample_time > 0.0)) {
     return usage("--reference-dl and --time must be > 0");
   }
@@ -466,6 +476,7 @@ int main(int argc, char** argv) {
       section = *it;
       CaseSpec ref = base;
       ref.dl = reference_dl;
+      if (reference_stabilisation == "3a85288") use_scheme_3a85288(ref);
       if (settle >= 0.0) ref.settle_time = settle;
       const std::string key = reference_key(ref, sample_time, section_name);
       if (read_reference(reference_path, key, reference)) {
@@ -534,7 +545,10 @@ int main(int argc, char** argv) {
               errors.emplace_back(ok ? section_error(samples, reference) : NAN,
                                   "rms_u_" + section_name);
               if (ok && !samples_prefix.empty()) {  // each run's samples, as the reference's
-                write_reference(samples_prefix + "_" + d + "_" + rule + ".csv",
+                // One file per run: the scheme in the name when it is not the defaults'.
+                const std::string scheme_tag =
+                    stabilisation == "default" ? "" : "_" + stabilisation;
+                write_reference(samples_prefix + "_" + d + "_" + rule + scheme_tag + ".csv",
                                 reference_key(spec, sample_time, section_name), samples,
                                 section_name);
               }
