@@ -18,7 +18,6 @@ class TerminalProgress {
   TerminalProgress(const TerminalProgress&) = delete;
   TerminalProgress& operator=(const TerminalProgress&) = delete;
 
-  bool enabled() const { return enabled_; }
   /// Rewrites the line; at most ten times a second unless `force`.
   void show(const std::string& line, bool force = false);
   /// Ends the line (a newline) if anything was shown; show() may start a new one.

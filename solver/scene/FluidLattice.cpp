@@ -114,7 +114,6 @@ FluidScan scan_fluid_lattice(const CaseSpec& spec, const std::vector<WallGeometr
   std::vector<IndexBox> boxes;
   for (const auto& f : spec.fluids) boxes.push_back(index_box(f.polygon, spec));
   const IndexBox u = union_box(spec);
-  scan.lattice_points = static_cast<std::int64_t>(std::min(u.points(), 9.0e18));
 
   // Containment: a ray along gravity from every kept point must meet a wall. Long enough to
   // leave the box of everything.

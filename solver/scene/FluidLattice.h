@@ -42,10 +42,9 @@ std::string fluid_label(const CaseSpec& spec, std::size_t f);
 /// whole lattice).
 struct FluidScan {
   std::int64_t stride = 1;
-  std::int64_t kept = 0;            ///< points that become fluid particles
-  std::int64_t trimmed = 0;         ///< dropped within the wall clearance
-  std::int64_t displaced = 0;       ///< inside a closed wall (a solid body)
-  std::int64_t lattice_points = 0;  ///< points of the fluid shapes' bounding box
+  std::int64_t kept = 0;       ///< points that become fluid particles
+  std::int64_t trimmed = 0;    ///< dropped within the wall clearance
+  std::int64_t displaced = 0;  ///< inside a closed wall (a solid body)
 };
 
 /// Scans the lattice points origin + (i + 1/2, j + 1/2) DL of the fluid shapes' bounding box,
