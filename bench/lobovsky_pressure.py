@@ -4,12 +4,21 @@ record of sensor 1, for the new default scheme and the scheme of commit 3a85288.
 
 usage: bench/lobovsky_pressure.py [--wcmps build/bin/wcmps] [--out DIR] [--dl 0.005]
                                   [--threads 2] [--reuse] [--plot FILE.png]
+                                  [--reading wetted|shepard]
 
 Each scheme's run writes frames every 1 ms (pressure and kind only). A sensor reads the
 pressure the way the experiment's does: averaged over its face, a disc of 4.2 mm on the wall,
 here the segment of the wall's surface x = 1.61 m over the sensor's height, sampled at 9 points;
-each point takes the Shepard average of the fluid particles within re of it, carried to the point
+each point takes the kernel average of the fluid particles within re of it, carried to the point
 by the hydrostatic term (p_f + rho g (y_f - y), the reading Adami et al. 2012 give a wall).
+The average divides by the weights present, but never by less than half of what the point
+would weigh under still water (--reading wetted, the default): a point that water covers only in
+small part reads that part, as a sensor's face that is partly dry carries the pressure over its
+wet part only. (Half, not the whole: the water beside a wall after the impact sits a little
+farther from it than the lattice does, and a fully wet point would read low.) --reading shepard divides by the weights present alone (the Shepard average, as
+before 2026-12-02): a point then reads the full pressure of a single particle up to re away, and
+the first particles to strike the wall (the most compressed) set the reading of every point
+within re of them, dry or not.
 Times are t (g/H)^1/2 and pressures p / (rho g H), H = 0.3 m, as the paper plots them.
 
 Metrics for each sensor: the impact time (first sample at or above 0.1 rho g H), the peak (the
@@ -27,6 +36,13 @@ the precision of reading). The record's sample-to-sample noise on that plateau i
 (its quantisation is 0.00036). One event: Lobovsky et al. repeated the impact about 100 times
 and show the peak varying widely from event to event, so the peak is compared as an order of
 magnitude, the impact time and the level after closely.
+
+The same event's sensor 3 (P3, 30 mm up), held beside it (..._sensors_2.dat, whose header reads
+"# sensor 3"), read the same way: it stays under 0.1 until t* = 2.50923 (0.102), then rises
+without a spike, through 0.42 (2.528), 1.0 (2.578) and 1.5 (2.64), to its peak 1.544 at
+t* = 2.671, and falls slowly (1.23 at 2.98); from t* = 3.500 to 3.800 every sample lies between
+0.537 and 0.629 (mean 0.58 to the precision of reading), with sample-to-sample noise of about
+0.002. The public record holds no P2 or P4 of this event.
 """
 import argparse
 import math
@@ -44,7 +60,17 @@ CASE = ROOT / "cases" / "lobovsky" / "case.toml"
 H, RHO, G, WALL_X = 0.3, 1000.0, 9.81, 1.61
 SENSORS = {"P1": 0.003, "P2": 0.015, "P3": 0.030, "P4": 0.080}
 SENSOR_SIZE = 0.0042
-EXPERIMENT_P1 = {"impact": 2.4438, "peak": 3.044, "after": 0.765, "noise": 0.002}
+# A point of a sensor is wet when the fluid near it weighs at least this share of what still
+# water would put there; below it, it reads its wet part only (see the module's text).
+WET_SHARE = 0.5
+EXPERIMENT = {
+    "P1": {"impact": 2.4438, "peak": 3.044, "peak_t": 2.455, "after": 0.765, "noise": 0.002,
+           "points": ([2.4438, 2.4438, 2.455, 2.57, 2.71, 3.55, 3.82],
+                      [0.0, 0.16, 3.044, 2.0, 1.5, 0.765, 0.765])},
+    "P3": {"impact": 2.509, "peak": 1.544, "peak_t": 2.671, "after": 0.58, "noise": 0.002,
+           "points": ([2.509, 2.528, 2.578, 2.64, 2.671, 2.98, 3.5, 3.8],
+                      [0.10, 0.42, 1.0, 1.5, 1.544, 1.23, 0.58, 0.58])},
+}
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD)]
@@ -59,7 +85,17 @@ def case_text(physics, dl):
     return text.replace("[physics]\n", "[physics]\n" + keys, 1)
 
 
-def read_sensors(frame, re_radius):
+def wet_weight(y, re_radius, dl):
+    """The weight sum of the point (WALL_X, y) on the wall under still water: the fluid lattice
+    of the scene (its first column and row DL/2 off the wall's and the floor's surfaces), which
+    fills the quarter of the kernel between wall and floor near the corner (P1, P2) and the half
+    beside the wall above it."""
+    i, j = np.meshgrid(np.arange(int(re_radius / dl) + 2), np.arange(int((y + re_radius) / dl) + 2))
+    d = np.hypot((i + 0.5) * dl, (j + 0.5) * dl - y)
+    return float((np.clip(1.0 - d / re_radius, 0.0, None) ** 3).sum())
+
+
+def read_sensors(frame, re_radius, dl, shepard=False):
     r = vtkXMLPolyDataReader()
     r.SetFileName(str(frame))
     r.Update()
@@ -77,7 +113,11 @@ def read_sensors(frame, re_radius):
             d = np.hypot(xy[:, 0] - WALL_X, xy[:, 1] - y)
             w = np.clip(1.0 - d / re_radius, 0.0, None) ** 3
             s = w.sum()
-            readings.append(((p + RHO * G * (xy[:, 1] - y)) * w).sum() / s if s > 0 else 0.0)
+            wet = 0.0 if shepard else WET_SHARE * wet_weight(y, re_radius, dl)
+            if s > 0:
+                readings.append(((p + RHO * G * (xy[:, 1] - y)) * w).sum() / max(s, wet))
+            else:
+                readings.append(0.0)
         out[name] = float(np.mean(readings))
     return t, out
 
@@ -108,6 +148,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--reuse", action="store_true", help="analyse earlier runs in --out")
     ap.add_argument("--plot", help="write the sensors' signals to this PNG")
+    ap.add_argument("--reading", choices=("wetted", "shepard"), default="wetted",
+                    help="how a point of a sensor averages the fluid near it (see above)")
     args = ap.parse_args()
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -126,7 +168,7 @@ def main():
         frames = sorted(run.glob("frame_*.vtp"))
         ts, ps = [], {s: [] for s in SENSORS}
         for f in frames:
-            t, reading = read_sensors(f, 3.5 * args.dl)
+            t, reading = read_sensors(f, 3.5 * args.dl, args.dl, args.reading == "shepard")
             ts.append(t * scale)
             for s in SENSORS:
                 ps[s].append(reading[s] / (RHO * G * H))
@@ -134,9 +176,11 @@ def main():
     print(f"DL = {args.dl} m; t* = t (g/H)^1/2, p* = p / (rho g H) = p / {RHO * G * H:.0f} Pa")
     print("| sensor | run | impact t* | peak p* (at t*) | level after, t* 3.5-3.8 | noise (rms about the running mean) |")
     print("|---|---|---|---|---|---|")
-    e = EXPERIMENT_P1
-    print(f"| P1 | experiment (event 5) | {e['impact']:.3f} | {e['peak']:.2f} (2.455) | {e['after']:.2f} | {e['noise']:.3f} |")
     for s in SENSORS:
+        if s in EXPERIMENT:
+            e = EXPERIMENT[s]
+            print(f"| {s} | experiment (event 5) | {e['impact']:.3f} | {e['peak']:.2f} "
+                  f"({e['peak_t']:.3f}) | {e['after']:.2f} | {e['noise']:.3f} |")
         for name, (ts, ps) in series.items():
             m = metrics(ts, ps[s])
             if m is None:
@@ -155,11 +199,11 @@ def main():
             ax.set_ylabel(f"{s}: p / (rho g H)")
             ax.set_xlim(2.0, 7.0)
             ax.grid(alpha=0.3)
-        axes[0].axhline(e["after"], color="k", ls=":", lw=0.8)
-        axes[0].plot([e["impact"], e["impact"], 2.455, 2.57, 2.71, 3.55, 3.82],
-                     [0.0, 0.16, e["peak"], 2.0, 1.5, e["after"], e["after"]], "k.",
-                     label="experiment, event 5 (points read from the record)")
-        axes[0].legend(fontsize=8)
+        for ax, s in zip(axes, ("P1", "P3")):
+            e = EXPERIMENT[s]
+            ax.axhline(e["after"], color="k", ls=":", lw=0.8)
+            ax.plot(*e["points"], "k.", label="experiment, event 5 (points read from the record)")
+            ax.legend(fontsize=8)
         axes[1].set_xlabel("t (g/H)^1/2")
         fig.suptitle(f"Lobovsky et al. (2014) dam break, H = 300 mm, DL = {args.dl * 1000:g} mm")
         fig.tight_layout()
