@@ -110,9 +110,12 @@ def main():
     print(f"| variant | largest abs. mean of p - rho g (H - y), Pa, per 0.5 s from 0 to {args.end:g} s"
           " | frequency (Hz) | last / 0.5-1 s |")
     print("|---|---|---|---|")
+    failed = 0
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:
         for line in ex.map(run, wanted):
             print(line, flush=True)
+            failed += "run failed" in line
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
