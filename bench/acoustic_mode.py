@@ -107,8 +107,8 @@ def main():
         return (f"| {label} | " + " ".join(f"{a:.0f}" for a in amp) +
                 f" | {f_peak:.1f} | {amp[-1] / amp[1]:.2f} |")
 
-    print(f"| variant | largest abs. mean of p - rho g (H - y), Pa, per 0.5 s from 0 to {args.end:g} s"
-          " | frequency (Hz) | last / 0.5-1 s |")
+    print("| variant | largest abs. mean of p - rho g (H - y), Pa, per 0.5 s from 0 to "
+          f"{args.end:g} s | frequency (Hz) | last / 0.5-1 s |")
     print("|---|---|---|---|")
     failed = 0
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as ex:

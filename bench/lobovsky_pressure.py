@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The impact pressure of the Lobovsky et al. (2014) dam break (cases/lobovsky) against their
-record of sensor 1, for the new default scheme and the scheme of commit 3a85288.
+records of sensors 1 and 3, for the new default scheme and the scheme of commit 3a85288.
 
 usage: bench/lobovsky_pressure.py [--wcmps build/bin/wcmps] [--out DIR] [--dl 0.005]
                                   [--threads 2] [--reuse] [--plot FILE.png]
@@ -15,10 +15,10 @@ The average divides by the weights present, but never by less than half of what 
 would weigh under still water (--reading wetted, the default): a point that water covers only in
 small part reads that part, as a sensor's face that is partly dry carries the pressure over its
 wet part only. (Half, not the whole: the water beside a wall after the impact sits a little
-farther from it than the lattice does, and a fully wet point would read low.) --reading shepard divides by the weights present alone (the Shepard average, as
-before 2026-12-02): a point then reads the full pressure of a single particle up to re away, and
-the first particles to strike the wall (the most compressed) set the reading of every point
-within re of them, dry or not.
+farther from it than the lattice does, and a fully wet point would read low.) --reading shepard
+divides by the weights present alone (the Shepard average, as before 2026-12-02): a point then
+reads the full pressure of a single particle up to re away, and the first particles to strike
+the wall (the most compressed) set the reading of every point within re of them, dry or not.
 Times are t (g/H)^1/2 and pressures p / (rho g H), H = 0.3 m, as the paper plots them.
 
 Metrics for each sensor: the impact time (first sample at or above 0.1 rho g H), the peak (the
@@ -45,6 +45,7 @@ t* = 2.671, and falls slowly (1.23 at 2.98); from t* = 3.500 to 3.800 every samp
 0.002. The public record holds no P2 or P4 of this event.
 """
 import argparse
+import functools
 import math
 import re
 import subprocess
@@ -85,6 +86,7 @@ def case_text(physics, dl):
     return text.replace("[physics]\n", "[physics]\n" + keys, 1)
 
 
+@functools.lru_cache(maxsize=None)
 def wet_weight(y, re_radius, dl):
     """The weight sum of the point (WALL_X, y) on the wall under still water: the fluid lattice
     of the scene (its first column and row DL/2 off the wall's and the floor's surfaces), which
