@@ -27,12 +27,12 @@
 #include <utility>
 #include <vector>
 
+#include "core/StateArchive.h"
 #include "core/Vec2.h"
 #include "particles/ParticleSet.h"
 #include "physics/SlideMotion.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
-#include "simulation/StateArchive.h"
 
 namespace wcmps {
 

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "simulation/StateArchive.h"
+#include "core/StateArchive.h"
 
 namespace wcmps {
 

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "core/StateArchive.h"
 #include "scene/CaseSpec.h"
 #include "simulation/Runner.h"
-#include "simulation/StateArchive.h"
 
 namespace wcmps {
 

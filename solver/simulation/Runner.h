@@ -9,9 +9,9 @@
 #include <functional>
 #include <vector>
 
+#include "core/StateArchive.h"
 #include "scene/CaseSpec.h"
 #include "simulation/Simulation.h"
-#include "simulation/StateArchive.h"
 
 namespace wcmps {
 

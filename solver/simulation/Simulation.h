@@ -8,6 +8,7 @@
 
 #include "body/SlidingBody.h"
 
+#include "core/StateArchive.h"
 #include "neighbours/CellGrid.h"
 #include "neighbours/NeighbourList.h"
 #include "operators/DensitySums.h"
@@ -27,7 +28,6 @@
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/PhaseTimer.h"
-#include "simulation/StateArchive.h"
 
 namespace wcmps {
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "core/StateArchive.h"
 #include "neighbours/CellGrid.h"
 #include "operators/Kernel.h"
 #include "scene/CaseSpec.h"
-#include "simulation/StateArchive.h"
 
 namespace wcmps {
 
