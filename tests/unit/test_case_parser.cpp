@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -102,6 +103,33 @@ TEST(CaseParser, WrongTypeIsNamed) {
                "[time] end: expected a number, got a string");
   expect_error(test::minimal_case_text() + "\n[output]\nfields = \"pressure\"\n", 18,
                "[output] fields: expected an array");
+}
+
+// WCMPS_TEST_PHYSICS (tests/support/TestSupport.h) puts [physics] lines into every validation
+// case: replacing the case's own keys, or in a table of its own.
+TEST(TestSupport, PhysicsOverrideReplacesTheCasesKeys) {
+  // The environment of whoever runs the tests comes back at the end.
+  const char* prior = std::getenv("WCMPS_TEST_PHYSICS");
+  const std::string kept = prior ? prior : "";
+  const std::string with_table =
+      test::minimal_case_text() + "\n[physics]\nartificial_viscosity = 0.05\neos_exponent = 3.0\n";
+  ASSERT_EQ(
+      setenv("WCMPS_TEST_PHYSICS", " artificial_viscosity = 0.01; wall_pressure = \"eos\";", 1), 0);
+  for (const std::string& text : {test::minimal_case_text(), with_table}) {
+    CaseSpec c = parse_case_text(text, "mini.toml");
+    test::apply_scheme_override(c);
+    EXPECT_DOUBLE_EQ(c.artificial_viscosity, 0.01);
+    EXPECT_EQ(c.wall_pressure, WallPressureScheme::Eos);
+    EXPECT_EQ(c.name, "mini");
+    EXPECT_DOUBLE_EQ(c.eos_exponent, text == with_table ? 3.0 : 7.0);  // other keys kept
+  }
+  ASSERT_EQ(setenv("WCMPS_TEST_PHYSICS", "artificial_viscosity 0.01", 1), 0);
+  CaseSpec c = parse_case_text(test::minimal_case_text(), "mini.toml");
+  EXPECT_THROW(test::apply_scheme_override(c), std::invalid_argument);
+  ASSERT_EQ(setenv("WCMPS_TEST_PHYSICS", "no_such_key = 1", 1), 0);
+  EXPECT_THROW(test::apply_scheme_override(c), CaseError);
+  ASSERT_EQ(prior ? setenv("WCMPS_TEST_PHYSICS", kept.c_str(), 1) : unsetenv("WCMPS_TEST_PHYSICS"),
+            0);
 }
 
 TEST(CaseParser, OutOfRangeValueIsNamedWithTheRange) {

@@ -164,8 +164,9 @@ TEST(SlidingBlock, WaterFollowsTheBlock) {
     }
     return largest;
   };
-  // Not test::load_case: this test sets both schemes itself.
+  // Not test::load_case: this test sets both schemes itself (WCMPS_TEST_PHYSICS goes into both).
   CaseSpec spec = parse_case_file(test::source_path("cases/caseI/case.toml"));
+  test::apply_physics_override(spec);
   std::printf("defaults:\n");
   const double now = largest_cavity(spec);
   use_scheme_3a85288(spec);
