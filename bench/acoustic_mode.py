@@ -48,6 +48,10 @@ VARIANTS = [
     ("artificial_viscosity 0", 10, {"artificial_viscosity": "0.0"}),
     ("wall_pressure eos", 10, {"wall_pressure": '"eos"'}),
     ("eos_exponent 1 (linear), c0 x 2", 20, {"eos_exponent": "1.0"}),
+    ("shifting_in_continuity true", 10, {"shifting_in_continuity": "true"}),
+    ("shifting_in_continuity true, c0 x 2", 20, {"shifting_in_continuity": "true"}),
+    ("shifting_in_continuity true, artificial_viscosity 0", 10,
+     {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
 ]
 
 

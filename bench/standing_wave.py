@@ -59,6 +59,9 @@ SCHEMES = [
     ("new, artificial viscosity 0.001", {"artificial_viscosity": "0.001"}),
     ("new, artificial viscosity 0.005", {"artificial_viscosity": "0.005"}),
     ("new, artificial viscosity 0.01", {"artificial_viscosity": "0.01"}),
+    ("new, shifting in continuity", {"shifting_in_continuity": "true"}),
+    ("new, shifting in continuity, artificial viscosity 0",
+     {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -40,6 +40,8 @@ class StateReader {
   virtual void field(const std::string& name, std::int64_t* values, std::size_t count) = 0;
   /// The number of tuples of a field (0 if it has none), for fields whose length varies.
   virtual std::size_t count(const std::string& name) = 0;
+  /// Whether the archive holds the field: for fields that earlier versions did not write.
+  virtual bool has(const std::string& name) = 0;
   virtual double scalar(const std::string& name) = 0;
   virtual std::int64_t integer(const std::string& name) = 0;
 };

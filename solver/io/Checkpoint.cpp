@@ -166,6 +166,9 @@ class Hdf5Reader final : public StateReader {
     if (rank < 1 || rank > 2) fail(name + " is not a field");
     return static_cast<std::size_t>(dims[rank - 1]);
   }
+  bool has(const std::string& name) override {
+    return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
+  }
   double scalar(const std::string& name) override {
     double v = 0.0;
     attribute(name, H5T_NATIVE_DOUBLE, &v);

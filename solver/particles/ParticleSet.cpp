@@ -12,6 +12,8 @@ void ParticleState::resize(std::size_t count) {
   y.assign(count, 0.0);
   u.assign(count, 0.0);
   v.assign(count, 0.0);
+  shift_u.assign(count, 0.0);
+  shift_v.assign(count, 0.0);
   p.assign(count, 0.0);
   n.assign(count, 0.0);
   surface.assign(count, 0);
@@ -22,6 +24,8 @@ void ParticleState::swap(ParticleState& o) noexcept {
   y.swap(o.y);
   u.swap(o.u);
   v.swap(o.v);
+  shift_u.swap(o.shift_u);
+  shift_v.swap(o.shift_v);
   p.swap(o.p);
   n.swap(o.n);
   surface.swap(o.surface);
@@ -81,6 +85,8 @@ void ParticleSet::reorder_fluid(const std::vector<std::int32_t>& order) {
     next.y[to] = now.y[from];
     next.u[to] = now.u[from];
     next.v[to] = now.v[from];
+    next.shift_u[to] = now.shift_u[from];
+    next.shift_v[to] = now.shift_v[from];
     next.p[to] = now.p[from];
     next.n[to] = now.n[from];
     next.surface[to] = now.surface[from];

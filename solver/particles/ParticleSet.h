@@ -21,8 +21,12 @@ namespace wcmps {
 
 /// The evolving fields of every particle.
 struct ParticleState {
-  std::vector<double> x, y;           ///< position (m)
-  std::vector<double> u, v;           ///< velocity (m/s)
+  std::vector<double> x, y;  ///< position (m)
+  std::vector<double> u, v;  ///< velocity (m/s)
+  /// The particle shifting's displacement in the step that led to this state over that step's
+  /// dt (m/s; 0 without shifting and for boundary particles): the part of the particle's motion
+  /// that u does not carry, which the evolved number density must follow.
+  std::vector<double> shift_u, shift_v;
   std::vector<double> p;              ///< pressure (Pa)
   std::vector<double> n;              ///< number density at the predicted positions (-)
   std::vector<std::uint8_t> surface;  ///< 1 for free-surface particles

@@ -16,7 +16,8 @@
 ///                                + delta (re/2) c0 <lap n>_i ),
 ///
 ///   the first sum being exactly d/dt of the summed n (operators/DensitySums.h), evaluated at the
-///   predicted positions and velocities like Eq. 2.17, and <lap n> the MPS Laplacian (Eq. 2.7)
+///   predicted positions and velocities like Eq. 2.17 (u plus the particle shifting's velocity:
+///   ParticleShifting_Sun2017.h), and <lap n> the MPS Laplacian (Eq. 2.7)
 ///   over fluid neighbours of n^n with its hydrostatic part removed (Fourtakas et al. 2019,
 ///   Comput. Fluids 190, 346-361; DualSPHysics's "DDT2"):
 ///

@@ -12,22 +12,23 @@
 ///
 ///     lap   = sum_j (u_j - u_i) W_ij                        (Viscosity_Koshizuka1996Laplacian)
 ///     q     = sum_j f_ij (r_j - r_i)                       (ArtificialViscosity_Monaghan1992)
-///     rate  = sum_j W'(r_ij) (r_ij . u_ij) / r_ij           (Dn/Dt of the summed n, exactly)
+///     rate  = sum_j W'(r_ij) (r_ij . (u_ij + s_ij)) / r_ij  (Dn/Dt of the summed n, exactly)
 ///     lapl  = sum_{j fluid} (n_j - n_i + h . (r_i - r_j)) W_ij   (the diffusion's sum)
 ///     n     = sum_j W_ij                                   (the summed n, Eq. 2.4)
 ///     G     = (1/F0) sum_j [a_ij - b dn_ij] F'(r_ij) e_ij  (DensitySums.h)
 ///
-/// with r_ij = r_i - r_j, u_ij = u_i - u_j, h = n0 g / c0^2 (Fourtakas et al. 2019; 0 for
-/// Molteni & Colagrossi 2009). dn_ij = n_j - n_i is the difference of the number densities the
-/// particles carry (a boundary particle carries i's, taken to its depth: n0 g . (r_j - r_i) /
-/// c0^2), and b dn_ij takes the gradient of the carried n out of G: the concentration gradient
-/// that the water's compression, hydrostatic or dynamic, puts into the arrangement (DensitySums.h;
-/// b = 2 kappa F0 / (S_F n0), LatticeConstants). The shifting then moves particles towards the
-/// arrangement their own n asks for, not down the compression: with G alone it pushes still water
-/// up against its weight (the mean pressure climbs by 8 kPa in 2 s), and follows an acoustic
-/// wave's compression out of phase with n (a breathing mode of the flat tank grows to +-200 Pa).
-/// Pairs at r >= re add zero (W = W' = F' = 0); no branch, so the loop vectorises (the note of
-/// MpsOperators.h).
+/// with r_ij = r_i - r_j, u_ij = u_i - u_j, s_ij the same of the particle shifting's velocities
+/// of the last step (0 without it: ParticleShifting_Sun2017.h), h = n0 g / c0^2 (Fourtakas et al.
+/// 2019; 0 for Molteni & Colagrossi 2009). dn_ij = n_j - n_i is the difference of the number
+/// densities the particles carry (a boundary particle carries i's, taken to its depth:
+/// n0 g . (r_j - r_i) / c0^2), and b dn_ij takes the gradient of the carried n out of G: the
+/// concentration gradient that the water's compression, hydrostatic or dynamic, puts into the
+/// arrangement (DensitySums.h; b = 2 kappa F0 / (S_F n0), LatticeConstants). The shifting then
+/// moves particles towards the arrangement their own n asks for, not down the compression: with
+/// G alone it pushes still water up against its weight (the mean pressure climbs by 8 kPa in
+/// 2 s), and follows an acoustic wave's compression out of phase with n (a breathing mode of the
+/// flat tank grows to +-200 Pa). Pairs at r >= re add zero (W = W' = F' = 0); no branch, so the
+/// loop vectorises (the note of MpsOperators.h).
 
 #include <cmath>
 #include <cstdint>
@@ -61,9 +62,13 @@ struct DensityInputs {
   double inv_w_dl = 0.0;
   double compression = 0.0;
   Vec2 carried;
+  const double* shift_u = nullptr;  ///< the shifting's velocity of every particle (0: none)
+  const double* shift_v = nullptr;
 };
 
-template <bool kArtificial, bool kDensity>
+/// kShift: the rate reads the shift's velocities (d.shift_u, d.shift_v); without it they are not
+/// loaded at all (two gathers per pair less).
+template <bool kArtificial, bool kDensity, bool kShift = false>
 PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb, const double* x,
                                const double* y, const double* u, const double* v,
                                const DensityInputs& d) {
@@ -80,6 +85,9 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
   const double r_clump = d.clumping_r, inv_w_dl = d.inv_w_dl, b = d.compression;
   const double cx = d.carried.x, cy = d.carried.y;
   const std::int64_t fluid_begin = d.fluid_begin;
+  const double* su = d.shift_u;
+  const double* sv = d.shift_v;
+  const double sui = kShift ? su[i] : 0.0, svi = kShift ? sv[i] : 0.0;
   const std::int32_t* id = nb.first;
   double lap_x = 0.0, lap_y = 0.0, q_x = 0.0, q_y = 0.0, rate = 0.0, lapl = 0.0, n_sum = 0.0,
          g_x = 0.0, g_y = 0.0;
@@ -92,6 +100,12 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
     const double qk = ramp(1.0 - r * inv_re);
     const double wij = qk * qk * qk;
     const double du = u[j] - ui, dv = v[j] - vi;
+    // The relative velocity the rate reads: u's, and the shift's where it enters n.
+    double mu = du, mv = dv;
+    if constexpr (kShift) {
+      mu += su[j] - sui;
+      mv += sv[j] - svi;
+    }
     lap_x += Viscosity_Koshizuka1996Laplacian::pair(du, wij);
     lap_y += Viscosity_Koshizuka1996Laplacian::pair(dv, wij);
     if constexpr (kArtificial && kDensity) {
@@ -102,14 +116,14 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
       q_x += f * dx;
       q_y += f * dy;
       // W'(r)/r = -3 q^2 / (re r); (r_ij . u_ij) = (r_j - r_i) . (u_j - u_i).
-      rate += -3.0 * qk * qk * inv_re * (soft * r2 * inv) * (dx * du + dy * dv);
+      rate += -3.0 * qk * qk * inv_re * (soft * r2 * inv) * (dx * mu + dy * mv);
     } else if constexpr (kArtificial) {
       const double f = ArtificialViscosity_Monaghan1992::pair_factor_over(
           dx, dy, du, dv, wij, 1.0 / ((r2 + 0.01 * h2) * r2));
       q_x += f * dx;
       q_y += f * dy;
     } else if constexpr (kDensity) {
-      rate += -3.0 * qk * qk * inv_re / r * (dx * du + dy * dv);
+      rate += -3.0 * qk * qk * inv_re / r * (dx * mu + dy * mv);
     }
     if constexpr (kDensity) {
       // Both loaded and blended, not chosen by a branch (it would keep the loop scalar).

@@ -581,7 +581,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.dl = r.number("spacing", std::nullopt, 0.0, kInf, true);
     c.re_over_dl = r.number("kernel_radius", 3.5, 1.0, 8.0, true);
     c.lattice_origin = r.point("lattice_origin").value_or(Vec2{});
-    c.wall_clearance = r.number("wall_clearance", 0.5, 0.0, 1.0);
+    c.wall_clearance = r.number("wall_clearance", c.wall_clearance, 0.0, 1.0);
     c.hydrostatic_start =
         r.choice("initial_state", "hydrostatic", {"hydrostatic", "lattice"}) == "hydrostatic";
     c.settle_time = r.number("settle_time", 0.0, 0.0, kInf);
@@ -623,6 +623,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
         pick(kDensityDiffusionSchemes, "density_diffusion_scheme", c.density_diffusion_scheme);
     c.free_surface = pick(kFreeSurfaceSchemes, "free_surface", c.free_surface);
     c.shifting = pick(kShiftingSchemes, "shifting", c.shifting);
+    c.shifting_in_continuity = r.boolean("shifting_in_continuity", c.shifting_in_continuity);
     r.finish();
   }
   {

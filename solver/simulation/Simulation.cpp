@@ -88,6 +88,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       scan_{spec.surface_threshold, scene_.lattice.n0, 0.5 * spec.re()},
       shifting_scheme_(spec.shifting),
       shifting_{0.5 * spec.re()},
+      shift_in_continuity_(spec.shifting_in_continuity && spec.shifting != ShiftingScheme::None &&
+                           spec.number_density == NumberDensityScheme::Continuity),
       collision_scheme_(spec.wall_collision),
       collision_{spec.collision_distance * spec.dl, spec.collision_restitution},
       gravity_(spec.gravity),
@@ -321,6 +323,7 @@ void Simulation::save(StateWriter& out) const {
   const auto n = static_cast<std::size_t>(ps.size());
   out.field("position", {s.x.data(), s.y.data()}, n);
   out.field("velocity", {s.u.data(), s.v.data()}, n);
+  out.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
   out.field("pressure", {s.p.data()}, n);
   out.field("number_density", {s.n.data()}, n);
   out.field("free_surface", s.surface.data(), n);
@@ -348,6 +351,13 @@ void Simulation::load(StateReader& in) {
   const auto n = static_cast<std::size_t>(ps.size());
   in.field("position", {s.x.data(), s.y.data()}, n);
   in.field("velocity", {s.u.data(), s.v.data()}, n);
+  // Checkpoints written before 2026-12-03 have no shift: it was not part of the step then.
+  if (in.has("shift_velocity")) {
+    in.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
+  } else {
+    std::fill(s.shift_u.begin(), s.shift_u.end(), 0.0);
+    std::fill(s.shift_v.begin(), s.shift_v.end(), 0.0);
+  }
   in.field("pressure", {s.p.data()}, n);
   in.field("number_density", {s.n.data()}, n);
   in.field("free_surface", s.surface.data(), n);
@@ -427,18 +437,21 @@ void Simulation::predict(double dt) {
   // with in the last step, not u*: u* holds this step's g dt, which the pressure correction takes
   // out again, and against a wall it would read as a compression every step (in still water the
   // mean pressure then climbs by 290 Pa in 7 s). n then leads the momentum update as in
-  // symplectic Euler.
+  // symplectic Euler. To u^n the rate adds the last step's shift over its dt (shift_u, shift_v):
+  // the rest of the way the particles moved (ParticleShifting_Sun2017.h).
   const bool evolved = density_scheme_ == NumberDensityScheme::Continuity;
   DensityInputs density = density_inputs_;
   density.n = s.n.data();
+  density.shift_u = s.shift_u.data();
+  density.shift_v = s.shift_v.data();
   const double lap_scale = viscosity_.scale(ops_), q_scale = artificial_viscosity_.scale(ops_);
-  const auto pass = [&](auto kPairs, auto kArtificial, auto kDensity) {
+  const auto pass = [&](auto kPairs, auto kArtificial, auto kDensity, auto kShift) {
     return root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
       Vec2 a = gravity_;
       if constexpr (kPairs) {
-        const PredictionSums p =
-            prediction_sums<kArtificial, kDensity>(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
-                                                   s.y.data(), s.u.data(), s.v.data(), density);
+        const PredictionSums p = prediction_sums<kArtificial, kDensity, kShift>(
+            ops_.kernel(), i, neighbours_.of(i), s.x.data(), s.y.data(), s.u.data(), s.v.data(),
+            density);
         a += p.lap * lap_scale;
         if constexpr (kArtificial) a += p.q * q_scale;
         if constexpr (kDensity) {
@@ -458,12 +471,17 @@ void Simulation::predict(double dt) {
   using Yes = std::true_type;
   using No = std::false_type;
   const bool artificial = artificial_viscosity_.alpha > 0.0;
+  const bool follow = shift_in_continuity_;  // implies evolved
   if (!viscous && !evolved) {
-    star_drift_ = pass(No{}, No{}, No{});
+    star_drift_ = pass(No{}, No{}, No{}, No{});
   } else if (artificial) {
-    star_drift_ = evolved ? pass(Yes{}, Yes{}, Yes{}) : pass(Yes{}, Yes{}, No{});
+    star_drift_ = follow    ? pass(Yes{}, Yes{}, Yes{}, Yes{})
+                  : evolved ? pass(Yes{}, Yes{}, Yes{}, No{})
+                            : pass(Yes{}, Yes{}, No{}, No{});
   } else {
-    star_drift_ = evolved ? pass(Yes{}, No{}, Yes{}) : pass(Yes{}, No{}, No{});
+    star_drift_ = follow    ? pass(Yes{}, No{}, Yes{}, Yes{})
+                  : evolved ? pass(Yes{}, No{}, Yes{}, No{})
+                            : pass(Yes{}, No{}, No{}, No{});
   }
   if (body_) star_drift_ = std::max(star_drift_, body_drift(body_next_.s));
   if (viscous || evolved) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
@@ -645,6 +663,10 @@ void Simulation::move(double dt) {
       const Vec2 dr = shifting_.shift({grad_x_[i], grad_y_[i]}, umax, dt, nu);
       t.x[i] += dr.x;
       t.y[i] += dr.y;
+      if (shift_in_continuity_) {
+        t.shift_u[i] = dr.x / dt;
+        t.shift_v[i] = dr.y / dt;
+      }
     }
     return std::make_pair(sq(t.u[i]) + sq(t.v[i]),
                           sq(t.x[i] - x_built_[i]) + sq(t.y[i] - y_built_[i]));

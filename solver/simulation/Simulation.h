@@ -155,6 +155,7 @@ class Simulation {
   FreeSurface_Marrone2010 scan_;
   ShiftingScheme shifting_scheme_;
   ParticleShifting_Sun2017 shifting_;
+  bool shift_in_continuity_;  // the shift's velocity kept for the evolved n's rate
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
   TimeStepRule rule_, settle_rule_;

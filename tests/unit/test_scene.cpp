@@ -113,28 +113,23 @@ TEST(SceneBuilder, GhostsCopyTheWallParticleAlongTheWallNormal) {
   EXPECT_EQ(ps.ghost_count(), 210);
 }
 
-TEST(SceneBuilder, FluidUnderAnInclinedWallKeepsHalfASpacingFromIt) {
-  // A 40-degree bed: fluid fills the triangle above it; lattice points within DL/2 of the bed
-  // are dropped, so that every fluid particle is at least DL from the wall row.
+/// A 40-degree bed from (0, 0) up to y = 0.3 m, a vertical wall down to it (the solid on the
+/// right all along), and water in the triangle above the bed up to y = 0.25 m; `particles` adds
+/// lines to [particles].
+std::string slope_case(const std::string& particles) {
   const double t = std::tan(40.0 * M_PI / 180.0);
-  const std::string text = R"([case]
-name = "slope"
-[particles]
-spacing = 0.01
-[time]
-end = 0.01
-[[wall]]
-polyline = [[0.0, 0.3], [0.0, 0.0], [)" +
-                           std::to_string(0.3 / t) +
-                           R"(, 0.3]]
-solid = "right"
-[[fluid]]
-polygon = [[0.0, 0.0], [)" +
-                           std::to_string(0.25 / t) +
-                           R"(, 0.25], [0.0, 0.25]]
-)";
-  // Down the vertical wall, then up the bed: the solid is on the right all along.
-  const CaseSpec spec = parse_case_text(text, "slope.toml");
+  return "[case]\nname = \"slope\"\n[particles]\nspacing = 0.01\n" + particles +
+         "[time]\nend = 0.01\n[[wall]]\npolyline = [[0.0, 0.3], [0.0, 0.0], [" +
+         std::to_string(0.3 / t) +
+         ", 0.3]]\nsolid = \"right\"\n[[fluid]]\npolygon = [[0.0, 0.0], [" +
+         std::to_string(0.25 / t) + ", 0.25], [0.0, 0.25]]\n";
+}
+
+TEST(SceneBuilder, FluidUnderAnInclinedWallKeepsHalfASpacingFromIt) {
+  // A 40-degree bed: fluid fills the triangle above it; with wall_clearance = 0.5 (the scheme of
+  // 3a85288) lattice points within DL/2 of the bed are dropped, so that every fluid particle is
+  // at least DL from the wall row.
+  const CaseSpec spec = parse_case_text(slope_case("wall_clearance = 0.5\n"), "slope.toml");
   const Scene scene = build_scene(spec);
   const ParticleSet& ps = scene.particles;
   EXPECT_GT(scene.trimmed_fluid, 0);
@@ -160,6 +155,34 @@ polygon = [[0.0, 0.0], [)" +
     }
   }
   EXPECT_GT(on_bed_row, 20);
+}
+
+TEST(SceneBuilder, FluidUnderAnInclinedWallFillsItToTheBed) {
+  // The same bed with the default clearance (0): the fluid reaches the bed's surface as the
+  // wall's rows reach it from below, so the particles hold the triangle's whole area, one DL^2
+  // each; half a DL of clearance leaves a strip along the bed empty, half a DL wide on average
+  // (here 0.5 x 38.9 = 19 particles of 372, 5 %).
+  const double t = std::tan(40.0 * M_PI / 180.0);
+  const CaseSpec spec = parse_case_text(slope_case(""), "slope.toml");
+  ASSERT_EQ(spec.wall_clearance, 0.0);
+  const Scene scene = build_scene(spec);
+  const ParticleSet& ps = scene.particles;
+  const Vec2 a = spec.walls[0].points[1], b = spec.walls[0].points[2];
+  const Vec2 d = (b - a) * (1.0 / norm(b - a));
+  double closest_row = 1.0;
+  for (std::int64_t f = ps.fluid_begin(); f < ps.size(); ++f) {
+    const Vec2 p{ps.now.x[f], ps.now.y[f]};
+    EXPECT_GT(cross(d, p - a), 0.0) << "fluid on the bed's solid side";
+    for (std::int64_t w = 0; w < ps.wall_end(); ++w) {
+      closest_row = std::min(closest_row, std::hypot(p.x - ps.now.x[w], p.y - ps.now.y[w]));
+    }
+  }
+  // The wall row lies DL/2 inside the bed: no fluid particle is nearer to it than that.
+  EXPECT_GE(closest_row, 0.005 * (1 - 1e-6));
+  // A straight cut of the lattice holds area / DL^2 particles to within a few (the corners):
+  // 1 %, against the 5 % the clearance of DL/2 leaves out.
+  const double area = 0.5 * 0.25 * (0.25 / t);
+  EXPECT_NEAR(static_cast<double>(ps.fluid_count()), area / (0.01 * 0.01), 0.01 * area / 1e-4);
 }
 
 TEST(SceneBuilder, HydrostaticStartGivesRhoGDepthInTheInterior) {
