@@ -12,8 +12,6 @@ void ParticleState::resize(std::size_t count) {
   y.assign(count, 0.0);
   u.assign(count, 0.0);
   v.assign(count, 0.0);
-  shift_u.assign(count, 0.0);
-  shift_v.assign(count, 0.0);
   p.assign(count, 0.0);
   n.assign(count, 0.0);
   surface.assign(count, 0);
@@ -29,6 +27,13 @@ void ParticleState::swap(ParticleState& o) noexcept {
   p.swap(o.p);
   n.swap(o.n);
   surface.swap(o.surface);
+}
+
+void ParticleSet::track_shift() {
+  for (ParticleState* s : {&now, &next}) {
+    s->shift_u.assign(kind.size(), 0.0);
+    s->shift_v.assign(kind.size(), 0.0);
+  }
 }
 
 ParticleSet::ParticleSet(const std::vector<ParticleSeed>& walls,
@@ -85,13 +90,17 @@ void ParticleSet::reorder_fluid(const std::vector<std::int32_t>& order) {
     next.y[to] = now.y[from];
     next.u[to] = now.u[from];
     next.v[to] = now.v[from];
-    next.shift_u[to] = now.shift_u[from];
-    next.shift_v[to] = now.shift_v[from];
     next.p[to] = now.p[from];
     next.n[to] = now.n[from];
     next.surface[to] = now.surface[from];
     id_scratch_[to] = id[from];
   });
+  if (!now.shift_u.empty()) {
+    parallel_for(0, size() - b, [&](std::int64_t k) {
+      next.shift_u[b + k] = now.shift_u[order[k]];
+      next.shift_v[b + k] = now.shift_v[order[k]];
+    });
+  }
   now.swap(next);
   std::copy(id_scratch_.begin() + b, id_scratch_.end(), id.begin() + b);
 }

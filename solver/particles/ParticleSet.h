@@ -24,8 +24,9 @@ struct ParticleState {
   std::vector<double> x, y;  ///< position (m)
   std::vector<double> u, v;  ///< velocity (m/s)
   /// The particle shifting's displacement in the step that led to this state over that step's
-  /// dt (m/s; 0 without shifting and for boundary particles): the part of the particle's motion
-  /// that u does not carry, which the evolved number density must follow.
+  /// dt (m/s; 0 for boundary particles): the part of the particle's motion that u does not
+  /// carry, which the evolved number density follows with [physics] shifting_in_continuity.
+  /// Empty unless ParticleSet::track_shift() was called; resize() leaves them alone.
   std::vector<double> shift_u, shift_v;
   std::vector<double> p;              ///< pressure (Pa)
   std::vector<double> n;              ///< number density at the predicted positions (-)
@@ -63,6 +64,8 @@ class ParticleSet {
   /// Reorders the fluid particles: new fluid slot k takes old particle order[k], where order is
   /// a permutation of [fluid_begin, size). Uses `next` as scratch, so call it between steps.
   void reorder_fluid(const std::vector<std::int32_t>& order);
+  /// Gives both states the shift's velocities (ParticleState::shift_u), zero.
+  void track_shift();
 
   ParticleState now;   ///< the state at the current time
   ParticleState next;  ///< scratch for the step in progress

@@ -119,6 +119,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     grad_x_.resize(ps.size());
     grad_y_.resize(ps.size());
   }
+  if (shift_in_continuity_) ps.track_shift();
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
   if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_) {
     band_x_.resize(ps.size());
@@ -323,7 +324,7 @@ void Simulation::save(StateWriter& out) const {
   const auto n = static_cast<std::size_t>(ps.size());
   out.field("position", {s.x.data(), s.y.data()}, n);
   out.field("velocity", {s.u.data(), s.v.data()}, n);
-  out.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
+  if (shift_in_continuity_) out.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
   out.field("pressure", {s.p.data()}, n);
   out.field("number_density", {s.n.data()}, n);
   out.field("free_surface", s.surface.data(), n);
@@ -351,10 +352,11 @@ void Simulation::load(StateReader& in) {
   const auto n = static_cast<std::size_t>(ps.size());
   in.field("position", {s.x.data(), s.y.data()}, n);
   in.field("velocity", {s.u.data(), s.v.data()}, n);
-  // Checkpoints written before 2026-12-03 have no shift: it was not part of the step then.
-  if (in.has("shift_velocity")) {
+  // Only a run that follows the shift keeps it; a checkpoint of one that did not (or of a
+  // version before 2026-12-03) starts it from zero.
+  if (shift_in_continuity_ && in.has("shift_velocity")) {
     in.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
-  } else {
+  } else if (shift_in_continuity_) {
     std::fill(s.shift_u.begin(), s.shift_u.end(), 0.0);
     std::fill(s.shift_v.begin(), s.shift_v.end(), 0.0);
   }

@@ -131,6 +131,8 @@ std::string state_bytes(const Simulation& sim) {
   add(s.v);
   add(s.p);
   add(s.n);
+  add(s.shift_u);
+  add(s.shift_v);
   add(s.surface);
   add(sim.particles().id);
   const double t = sim.time();
@@ -142,12 +144,14 @@ std::string state_bytes(const Simulation& sim) {
   return out;
 }
 
-TEST(Checkpoint, AContinuedSimulationIsIdenticalToAnUninterruptedOne) {
-  // The restart case of the command-line tests (a free block, gauges, settling): stop in the
-  // middle of settling and in the middle of the run, continue in a new Simulation.
+/// The restart case of the command-line tests (a free block, gauges, settling): stop in the
+/// middle of settling and in the middle of the run, continue in a new Simulation.
+void expect_continued_identical(bool shift_in_continuity) {
   CaseSpec spec = parse_case_file(test::source_path("tests/cli/restart.toml"));
   spec.end_time = 0.03;
-  const fs::path dir = test::scratch_dir("checkpoint_simulation");
+  spec.shifting_in_continuity = shift_in_continuity;
+  const fs::path dir = test::scratch_dir(shift_in_continuity ? "checkpoint_simulation_shift"
+                                                             : "checkpoint_simulation");
   CheckpointStore store(dir, 2);
 
   Simulation reference(spec, build_scene(spec));
@@ -184,6 +188,15 @@ TEST(Checkpoint, AContinuedSimulationIsIdenticalToAnUninterruptedOne) {
   EXPECT_EQ(from_settling.settle_steps(), reference.settle_steps());
   for (int k = 0; k < 120; ++k) from_settling.step(spec.end_time);
   EXPECT_TRUE(state_bytes(from_settling) == expected) << "the run continued from settling differs";
+}
+
+TEST(Checkpoint, AContinuedSimulationIsIdenticalToAnUninterruptedOne) {
+  expect_continued_identical(false);
+}
+
+TEST(Checkpoint, AContinuedSimulationFollowingTheShiftIsIdentical) {
+  // The shift's velocities of the last step are part of the state the next step reads.
+  expect_continued_identical(true);
 }
 
 /// Records frame times; writes checkpoints of the simulation and the run's figures.
