@@ -13,14 +13,16 @@
 
 #include "core/Error.h"
 #include "scene/CaseParser.h"
+#include "scene/FluidLattice.h"
 #include "scene/SceneBuilder.h"
 #include "scene/SizeEstimate.h"
 
 namespace {
 
 /// Scenes are built only while they stay small: the fuzzer looks for wrong answers to odd
-/// input, not for the (legitimate) memory a fine spacing asks for. Lattice points of the
-/// walls' bounding box, at most.
+/// input, not for the (legitimate) memory and time a fine spacing or a far-reaching shape asks
+/// for. Lattice points of the walls' bounding box and of the fluids' (the box the scene builder
+/// scans point by point), at most each.
 constexpr double kMaxLatticePoints = 2.0e5;
 
 bool small_enough(const wcmps::CaseSpec& spec) {
@@ -35,7 +37,8 @@ bool small_enough(const wcmps::CaseSpec& spec) {
   }
   const double points =
       (hi_x - lo_x + 2.0 * spec.re()) * (hi_y - lo_y + 2.0 * spec.re()) / (spec.dl * spec.dl);
-  return std::isfinite(points) && points < kMaxLatticePoints;
+  return std::isfinite(points) && points < kMaxLatticePoints &&
+         wcmps::fluid_lattice_points(spec) < kMaxLatticePoints;
 }
 
 }  // namespace
