@@ -88,10 +88,12 @@ std::string format_bytes(double bytes) {
   if (u == 0) {
     std::snprintf(buf, sizeof buf, "%.0f B", bytes);
   } else {
+    // Past 1000 PiB (a case whose box no machine holds) in powers of ten: "%.0f" would not fit.
     std::snprintf(buf, sizeof buf,
-                  bytes < 10.0    ? "%.2f %s"
-                  : bytes < 100.0 ? "%.1f %s"
-                                  : "%.0f %s",
+                  bytes < 10.0     ? "%.2f %s"
+                  : bytes < 100.0  ? "%.1f %s"
+                  : bytes < 1000.0 ? "%.0f %s"
+                                   : "%.3g %s",
                   bytes, units[u]);
   }
   return buf;

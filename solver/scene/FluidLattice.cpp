@@ -103,6 +103,11 @@ double fluid_lattice_points(const CaseSpec& spec) {
   return union_box(spec).points();
 }
 
+double fluid_lattice_span(const CaseSpec& spec) {
+  const IndexBox u = union_box(spec);
+  return std::max(static_cast<double>(u.i1 - u.i0 + 1), static_cast<double>(u.j1 - u.j0 + 1));
+}
+
 FluidScan scan_fluid_lattice(const CaseSpec& spec, const std::vector<WallGeometry>& geometry,
                              std::int64_t stride,
                              const std::function<void(Vec2, std::size_t)>& keep,

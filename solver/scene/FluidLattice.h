@@ -62,4 +62,7 @@ FluidScan scan_fluid_lattice(const CaseSpec& spec, const std::vector<WallGeometr
 /// Lattice points of the fluid shapes' bounding box (a double: it may exceed any integer).
 double fluid_lattice_points(const CaseSpec& spec);
 
+/// Lattice points along the longer side of that box.
+double fluid_lattice_span(const CaseSpec& spec);
+
 }  // namespace wcmps

@@ -43,8 +43,12 @@ ParticleEstimate estimate_particles(const CaseSpec& spec) {
   for (const auto& g : geometry) edges += 2.0 * static_cast<double>(g.surface.size());
   const double scanned = std::min(ParticleEstimate::kScannedPoints,
                                   ParticleEstimate::kEdgeTests / std::max(edges, 1.0));
-  e.stride =
-      std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(std::sqrt(points / scanned))));
+  // Every s-th point in x and y tests about (nx/s + 1)(ny/s + 1) points: at most 3 x scanned
+  // when s >= sqrt(nx ny / scanned) and s >= max(nx, ny) / scanned. The second bounds a box far
+  // longer than wide (a vertex typed a thousand times too far), whose one sampled column would
+  // otherwise hold up to max(nx, ny) / sqrt(nx ny / scanned) points.
+  const double s = std::max(std::sqrt(points / scanned), fluid_lattice_span(spec) / scanned);
+  e.stride = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(s)));
   const FluidScan scan = scan_fluid_lattice(spec, geometry, e.stride, {});
   e.fluid = static_cast<double>(scan.kept) * static_cast<double>(e.stride) *
             static_cast<double>(e.stride);

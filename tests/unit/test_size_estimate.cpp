@@ -122,6 +122,27 @@ TEST(SizeEstimate, HugeCasesAreEstimatedAndChecked) {
   EXPECT_THROW(estimate_particles(parse_case_text(outside, "outside.toml")), CaseError);
 }
 
+// A fluid shape far longer than wide (one vertex typed 1e9 m up, over a tank 1 m tall): the
+// sampled lattice stays within the estimate's budget. With one stride for both directions set by
+// the box's area alone, its single sampled column held 1e9 / sqrt(1e9 x 20 / 1e6) = 7e6 x more
+// points than the budget (a hang the case fuzzer found).
+TEST(SizeEstimate, ABoxFarLongerThanWideIsSampledWithinTheBudget) {
+  const CaseSpec spec = parse_case_text(
+      "[particles]\nspacing = 0.01\n[time]\nend = 0.01\n"
+      "[[wall]]\npolyline = [[0.0, 1.0], [0.0, 0.0], [0.2, 0.0], [0.2, 1.0]]\nsolid = \"right\"\n"
+      "[[fluid]]\npolygon = [[0.0, 0.0], [0.2, 0.0], [0.2, 0.1], [0.1, 1e9], [0.0, 0.1]]\n",
+      "tall.toml");
+  const ParticleEstimate e = estimate_particles(spec);
+  const double s = static_cast<double>(e.stride);
+  const double nx = 0.2 / 0.01 + 3.0, ny = 1e9 / 0.01 + 3.0;  // the box, one point of margin
+  EXPECT_LE((std::ceil(nx / s) + 1.0) * (std::ceil(ny / s) + 1.0),
+            3.0 * ParticleEstimate::kScannedPoints + 4.0);
+  // One point in 1e5 x 1e5 cannot see a sliver 20 points wide (the estimate may count none of
+  // it); the builder refuses the box, as it does any box past 2e8 points, with a message.
+  EXPECT_GE(e.fluid, 0.0);
+  EXPECT_THROW(build_scene(spec), CaseError);
+}
+
 TEST(Memory, SizesAreParsedWithTheirUnits) {
   EXPECT_EQ(parse_byte_size("512"), 512u);
   EXPECT_EQ(parse_byte_size("6G"), 6ull << 30);
@@ -137,6 +158,8 @@ TEST(Memory, SizesAreParsedWithTheirUnits) {
   EXPECT_EQ(format_bytes(512), "512 B");
   EXPECT_EQ(format_bytes(1536), "1.50 KiB");
   EXPECT_EQ(format_bytes(254.0 * 1024 * 1024), "254 MiB");
+  // Past any machine (a box a vertex typed far out asks for): still a size with its unit.
+  EXPECT_EQ(format_bytes(8.24e30), "7.32e+15 PiB");
   // This process has memory, and the machine some to spare.
   EXPECT_GT(current_rss_bytes(), 0u);
   EXPECT_GE(peak_rss_bytes(), current_rss_bytes());
