@@ -3,7 +3,7 @@
 records of sensors 1 and 3, for the new default scheme and the scheme of commit 3a85288.
 
 usage: bench/lobovsky_pressure.py [--wcmps build/bin/wcmps] [--out DIR] [--dl 0.005]
-                                  [--threads 2] [--reuse] [--plot FILE.png]
+                                  [--threads 2] [--reuse] [--plot FILE.png] [--schemes 0,1,2]
                                   [--reading wetted|shepard]
 
 Each scheme's run writes frames every 1 ms (pressure and kind only). A sensor reads the
@@ -74,7 +74,8 @@ EXPERIMENT = {
 }
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"'}
-SCHEMES = [("new default", {}), ("3a85288 scheme", OLD)]
+SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
+           ("surface_pressure_cap false", {"surface_pressure_cap": "false"})]
 
 
 def case_text(physics, dl):
@@ -152,12 +153,18 @@ def main():
     ap.add_argument("--plot", help="write the sensors' signals to this PNG")
     ap.add_argument("--reading", choices=("wetted", "shepard"), default="wetted",
                     help="how a point of a sensor averages the fluid near it (see above)")
+    ap.add_argument("--schemes", default=",".join(str(k) for k in range(len(SCHEMES))),
+                    help="which of the schemes to run or read, by index (default: all): " +
+                    "; ".join(f"{k} {name}" for k, (name, _) in enumerate(SCHEMES)))
     args = ap.parse_args()
+    chosen = {int(k) for k in args.schemes.split(",")}
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     scale = math.sqrt(G / H)
     series = {}
     for k_s, (name, physics) in enumerate(SCHEMES):
+        if k_s not in chosen:
+            continue
         run = out / f"scheme{k_s}"
         if not args.reuse:
             case = out / f"scheme{k_s}.toml"

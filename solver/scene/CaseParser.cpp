@@ -624,6 +624,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.free_surface = pick(kFreeSurfaceSchemes, "free_surface", c.free_surface);
     c.shifting = pick(kShiftingSchemes, "shifting", c.shifting);
     c.shifting_in_continuity = r.boolean("shifting_in_continuity", c.shifting_in_continuity);
+    c.surface_pressure_cap = r.boolean("surface_pressure_cap", c.surface_pressure_cap);
     r.finish();
   }
   {

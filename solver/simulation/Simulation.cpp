@@ -90,6 +90,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       shifting_{0.5 * spec.re()},
       shift_in_continuity_(spec.shifting_in_continuity && spec.shifting != ShiftingScheme::None &&
                            spec.number_density == NumberDensityScheme::Continuity),
+      surface_cap_(spec.surface_pressure_cap &&
+                   spec.number_density == NumberDensityScheme::Continuity),
       collision_scheme_(spec.wall_collision),
       collision_{spec.collision_distance * spec.dl, spec.collision_restitution},
       gravity_(spec.gravity),
@@ -551,6 +553,7 @@ void Simulation::compute_pressure() {
     t.p[i] = !on_surface ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
     t.surface[i] = on_surface ? 1 : 0;
   });
+  if (surface_cap_) cap_surface_pressure();
   if (wall_scheme_ == WallPressureScheme::Eos) {
     // The wall particle as a fluid particle of its own summed n (Shakibaeinia & Jin 2010).
     parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
@@ -576,6 +579,25 @@ void Simulation::compute_pressure() {
   parallel_for(ps.wall_end(), ps.fluid_begin(),
                [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
   if (!band_x_.empty()) find_surface_band();
+}
+
+void Simulation::cap_surface_pressure() {
+  // physics/SurfacePressureCap.h: two passes, so that every cap reads the pressures of this
+  // step's equation of state and no particle's cap depends on the order of the others.
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const std::int64_t fluid = ps.fluid_begin();
+  cap_.resize(ps.size());
+  const auto interior = [&](std::int32_t j) { return j >= fluid && !t.surface[j]; };
+  parallel_for(fluid, ps.size(), [&](std::int64_t i) {
+    if (!t.surface[i]) return;
+    cap_[i] = SurfacePressureCap::bound(i, neighbours_.of(i), t.x.data(), t.y.data(), t.p.data(),
+                                        ops_.kernel(), interior)
+                  .value_or(t.p[i]);
+  });
+  parallel_for(fluid, ps.size(), [&](std::int64_t i) {
+    if (t.surface[i]) t.p[i] = std::max(std::min(t.p[i], cap_[i]), 0.0);  // no tension
+  });
 }
 
 void Simulation::find_surface_band() {

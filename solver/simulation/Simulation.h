@@ -21,6 +21,7 @@
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
 #include "physics/PressureGradient.h"
+#include "physics/SurfacePressureCap.h"
 #include "physics/TimeStep.h"
 #include "physics/Viscosity.h"
 #include "physics/WallCollision.h"
@@ -111,6 +112,7 @@ class Simulation {
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
   void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
+  void cap_surface_pressure();        // physics/SurfacePressureCap.h
   void find_surface_band();           // the surface's band and its normals
   /// The positions the free surface is found at: r^n where the number density is evolved (the
   /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
@@ -156,6 +158,7 @@ class Simulation {
   ShiftingScheme shifting_scheme_;
   ParticleShifting_Sun2017 shifting_;
   bool shift_in_continuity_;  // the shift's velocity kept for the evolved n's rate
+  bool surface_cap_;          // physics/SurfacePressureCap.h (evolved n only)
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
   TimeStepRule rule_, settle_rule_;
@@ -181,6 +184,7 @@ class Simulation {
   std::vector<std::int32_t> band_;
   std::vector<std::uint8_t> in_band_;
   std::vector<std::uint8_t> wet_;  // wall particles with water in front of them (surface scan)
+  std::vector<double> cap_;        // surface particles' pressure caps (surface_pressure_cap)
 
   double time_ = 0.0;
   std::int64_t steps_ = 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
 #include "physics/PressureGradient.h"
+#include "physics/SurfacePressureCap.h"
 
 namespace wcmps {
 namespace {
@@ -427,6 +429,59 @@ TEST(PressureBound, ZeroClampsAndTheOthersKeepDownToTheFloor) {
   EXPECT_EQ(keep(-300.0), -300.0);
   EXPECT_EQ(keep(-2e5), -99e3);
   EXPECT_EQ(sw(-6e3), -5e3);
+}
+
+/// The cap of physics/SurfacePressureCap.h for every top-row particle of a block nx x ny whose
+/// top row is the surface, with pressures p.
+std::vector<std::optional<double>> surface_caps(const Cloud& c, int nx, int ny,
+                                                const std::vector<double>& p) {
+  const auto interior = [&](std::int32_t j) { return j < at(0, ny - 1, nx); };
+  std::vector<std::optional<double>> caps;
+  for (int i = 0; i < nx; ++i) {
+    const auto s = at(i, ny - 1, nx);
+    caps.push_back(SurfacePressureCap::bound(s, c.list.of(s), c.x.data(), c.y.data(), p.data(),
+                                             Kernel(kRe), interior));
+  }
+  return caps;
+}
+
+TEST(SurfacePressureCap, LeavesStillWaterAlone) {
+  // Hydrostatic pressure, the surface DL/2 over the top row: every row under the top one holds
+  // more than it, so no top-row particle is capped.
+  const int nx = 20, ny = 10;
+  const Cloud c = block(nx, ny);
+  std::vector<double> p(c.size());
+  for (std::int64_t k = 0; k < c.size(); ++k) {
+    p[k] = 1000.0 * 9.81 * ((ny - 1) * kDl + 0.5 * kDl - c.y[k]);
+  }
+  const auto caps = surface_caps(c, nx, ny, p);
+  for (int i = 0; i < nx; ++i) {
+    ASSERT_TRUE(caps[i].has_value()) << i;
+    EXPECT_GT(*caps[i], p[at(i, ny - 1, nx)]) << i;
+  }
+}
+
+TEST(SurfacePressureCap, HoldsACompressedTopRowToTheWaterUnderIt) {
+  // The top row at 200 Pa over water at 60 Pa (case I's layer upslope of the block): capped to
+  // the 60 Pa of the water under it, to rounding.
+  const int nx = 20, ny = 10;
+  const Cloud c = block(nx, ny, 0.1);
+  std::vector<double> p(c.size(), 60.0);
+  for (int i = 0; i < nx; ++i) p[at(i, ny - 1, nx)] = 200.0;
+  const auto caps = surface_caps(c, nx, ny, p);
+  for (int i = 0; i < nx; ++i) {
+    ASSERT_TRUE(caps[i].has_value()) << i;
+    EXPECT_NEAR(*caps[i], 60.0, 1e-9) << i;
+  }
+}
+
+TEST(SurfacePressureCap, ASheetOfSurfaceParticlesKeepsItsPressure) {
+  // A single row (a jet, a thin sheet): every particle is on the surface, none has water under
+  // it, and none is capped (at a wall such particles carry the impact).
+  const int nx = 20;
+  const Cloud c = block(nx, 1);
+  const std::vector<double> p(c.size(), 500.0);
+  for (const auto& cap : surface_caps(c, nx, 1, p)) EXPECT_FALSE(cap.has_value());
 }
 
 }  // namespace
