@@ -1,7 +1,7 @@
 #pragma once
 /// @file SurfacePressureCap.h
 /// @brief A free-surface particle's pressure held to at most that of the water under it
-/// ([physics] surface_pressure_cap, on by default; it acts with the evolved number density only).
+/// ([physics] surface_pressure_cap, off by default; it acts with the evolved number density only).
 ///
 /// With an evolved n a free-surface particle keeps the pressure of its own n, p = max(EOS, 0)
 /// (Simulation::compute_pressure says why it is not forced to 0). But its continuity equation
@@ -27,7 +27,9 @@
 /// project's treatment (no paper proposes it in this form); the discrete counterpart of the
 /// Dirichlet condition p = 0 at the surface with p >= 0 under it, which the old scheme imposed
 /// by p = 0 on the whole surface row (thesis Eq. 2.10). Measured in docs/validation.md ("A
-/// surface particle that pushes itself off").
+/// surface particle that pushes itself off"): it shrinks case I's cavity by a third, but in the
+/// splashes of the Lobovsky dam break the run breaks (a particle past max_density_ratio) under
+/// Courant numbers that run through without it, so it is not the default.
 
 #include <cmath>
 #include <cstdint>
