@@ -52,7 +52,7 @@ VARIANTS = [
     ("shifting_in_continuity true, c0 x 2", 20, {"shifting_in_continuity": "true"}),
     ("shifting_in_continuity true, artificial_viscosity 0", 10,
      {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
-    ("surface_pressure_cap true", 10, {"surface_pressure_cap": "true"}),
+    ("surface_pressure_cap false", 10, {"surface_pressure_cap": "false"}),
 ]
 
 

@@ -75,7 +75,7 @@ EXPERIMENT = {
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
-           ("surface_pressure_cap true", {"surface_pressure_cap": "true"})]
+           ("surface_pressure_cap false", {"surface_pressure_cap": "false"})]
 
 
 def case_text(physics, dl):

@@ -62,7 +62,7 @@ SCHEMES = [
     ("new, shifting in continuity", {"shifting_in_continuity": "true"}),
     ("new, shifting in continuity, artificial viscosity 0",
      {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
-    ("new, surface pressure cap", {"surface_pressure_cap": "true"}),
+    ("new, surface pressure cap off", {"surface_pressure_cap": "false"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -41,7 +41,7 @@ VARIANTS = [
     ("shifting_in_continuity true", {"shifting_in_continuity": "true"}),
     ("shifting_in_continuity true, density_diffusion 0",
      {"shifting_in_continuity": "true", "density_diffusion": "0.0"}),
-    ("surface_pressure_cap true", {"surface_pressure_cap": "true"}),
+    ("surface_pressure_cap false", {"surface_pressure_cap": "false"}),
 ]
 
 

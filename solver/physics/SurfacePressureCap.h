@@ -1,7 +1,7 @@
 #pragma once
 /// @file SurfacePressureCap.h
 /// @brief A free-surface particle's pressure held to at most that of the water under it
-/// ([physics] surface_pressure_cap, off by default; it acts with the evolved number density only).
+/// ([physics] surface_pressure_cap; it acts with the evolved number density only).
 ///
 /// With an evolved n a free-surface particle keeps the pressure of its own n, p = max(EOS, 0)
 /// (Simulation::compute_pressure says why it is not forced to 0). But its continuity equation
@@ -26,10 +26,25 @@
 /// touched: its surface row is below the hydrostatic pressure of the rows under it. This is the
 /// project's treatment (no paper proposes it in this form); the discrete counterpart of the
 /// Dirichlet condition p = 0 at the surface with p >= 0 under it, which the old scheme imposed
-/// by p = 0 on the whole surface row (thesis Eq. 2.10). Measured in docs/validation.md ("A
-/// surface particle that pushes itself off"): it shrinks case I's cavity by a third, but in the
-/// splashes of the Lobovsky dam break the run breaks (a particle past max_density_ratio) under
-/// Courant numbers that run through without it, so it is not the default.
+/// by p = 0 on the whole surface row (thesis Eq. 2.10).
+///
+/// **Not where the particle is struck.** The premise holds where the pressure varies smoothly
+/// over the kernel (a converging or a draining surface). Where a surface particle lands on water
+/// or strikes a wall, its pressure is the impact's, rho c u, over that of the water it hits; held
+/// to the water's, the particle loses the repulsion that keeps it off the particles it lands on,
+/// and the Lobovsky dam break's re-entering jet then packs particles past max_density_ratio
+/// (docs/validation.md). So the cap leaves a particle alone while its n rises faster than the
+/// compression of neighbours closing in at sqrt(g DL), the speed of a fall through one spacing:
+///
+///     (n^{k+1} - n^k) / (n0 dt) > sqrt(g DL) / DL = sqrt(g / DL).
+///
+/// The two regimes lie on either side of it at every resolution: a smooth convergence closes
+/// neighbours at |div u| DL, which vanishes with DL, while a striking particle closes them at its
+/// striking speed, independent of DL. Case I's draining trough raises its surface particles' n
+/// by at most 0.2 n0 per second (frame to frame, 0.1-0.24 s, DL 5 mm: closing at 1 mm/s) against
+/// the threshold's 44 n0 per second (0.22 m/s); the Lobovsky surge strikes the wall at up to
+/// 2 sqrt(g H) = 3.4 m/s. Without gravity the threshold is 0: only a particle whose n does not
+/// rise is capped. Measured in docs/validation.md ("A surface particle that pushes itself off").
 
 #include <cmath>
 #include <cstdint>
@@ -41,6 +56,16 @@
 namespace wcmps {
 
 struct SurfacePressureCap {
+  double struck_rate;  ///< sqrt(g / DL) (1/s): n rising faster than this times n0 is struck
+
+  static SurfacePressureCap make(double g, double dl) { return {std::sqrt(g / dl)}; }
+
+  /// Whether a surface particle whose n went from n_before to n_after over dt is struck: its
+  /// pressure is the impact's and is not capped.
+  bool struck(double n_before, double n_after, double n0, double dt) const {
+    return n_after - n_before > struck_rate * n0 * dt;
+  }
+
   /// The cap of surface particle s: the kernel-weighted mean pressure of the neighbours j for
   /// which interior(j) holds (fluid, not on the surface), positions x, y, pressures p. nullopt
   /// when no such neighbour is within re.

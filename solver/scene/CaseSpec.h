@@ -198,10 +198,10 @@ struct CaseSpec {
   /// (docs/validation.md, "The still water swells").
   bool shifting_in_continuity = false;
   /// A free-surface particle's pressure held to at most the mean of the water's under it
-  /// (physics/SurfacePressureCap.h); evolved n only. Off by default: case I's cavity a third
-  /// smaller and the quiet benchmarks unchanged with it, but the Lobovsky dam break breaks in
-  /// its splashes (docs/validation.md, "A surface particle that pushes itself off").
-  bool surface_pressure_cap = false;
+  /// (physics/SurfacePressureCap.h), except while the particle is struck; evolved n only. Case
+  /// I's cavity a third smaller, the quiet benchmarks unchanged (docs/validation.md, "A surface
+  /// particle that pushes itself off").
+  bool surface_pressure_cap = true;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide

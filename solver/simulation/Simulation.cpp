@@ -92,6 +92,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
                            spec.number_density == NumberDensityScheme::Continuity),
       surface_cap_(spec.surface_pressure_cap &&
                    spec.number_density == NumberDensityScheme::Continuity),
+      cap_rule_(SurfacePressureCap::make(norm(spec.gravity), spec.dl)),
       collision_scheme_(spec.wall_collision),
       collision_{spec.collision_distance * spec.dl, spec.collision_restitution},
       gravity_(spec.gravity),
@@ -159,7 +160,7 @@ void Simulation::compute_initial_pressure() {
   ps.next = ps.now;
   if (density_scheme_ == NumberDensityScheme::Continuity) predict(0.0);  // n, G of the start
   compute_number_density();
-  compute_pressure();
+  compute_pressure(0.0);
   ps.now.p = ps.next.p;
   ps.now.n = ps.next.n;
   ps.now.surface = ps.next.surface;
@@ -265,7 +266,7 @@ void Simulation::step(double t_stop) {
     timer_.time(Phase::Predict, [&] { predict(dt); });
   }
   timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
-  timer_.time(Phase::Pressure, [&] { compute_pressure(); });
+  timer_.time(Phase::Pressure, [&] { compute_pressure(dt); });
   timer_.time(Phase::Correct, [&] { correct(dt); });
   timer_.time(Phase::Move, [&] { move(dt); });
   timer_.time(Phase::Check, [&] { check_stability(dt); });
@@ -521,7 +522,7 @@ void Simulation::compute_number_density() {
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
-void Simulation::compute_pressure() {
+void Simulation::compute_pressure(double dt) {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   // Free surface (Eq. 2.10, or the scan of Marrone et al. 2010) and equation of state (Eq. 2.9)
@@ -553,7 +554,7 @@ void Simulation::compute_pressure() {
     t.p[i] = !on_surface ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
     t.surface[i] = on_surface ? 1 : 0;
   });
-  if (surface_cap_) cap_surface_pressure();
+  if (surface_cap_) cap_surface_pressure(dt);
   if (wall_scheme_ == WallPressureScheme::Eos) {
     // The wall particle as a fluid particle of its own summed n (Shakibaeinia & Jin 2010).
     parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
@@ -581,16 +582,23 @@ void Simulation::compute_pressure() {
   if (!band_x_.empty()) find_surface_band();
 }
 
-void Simulation::cap_surface_pressure() {
+void Simulation::cap_surface_pressure(double dt) {
   // physics/SurfacePressureCap.h: two passes, so that every cap reads the pressures of this
-  // step's equation of state and no particle's cap depends on the order of the others.
+  // step's equation of state and no particle's cap depends on the order of the others. A struck
+  // particle (its n rising fast) keeps its own pressure.
   ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
   const std::int64_t fluid = ps.fluid_begin();
+  const double n0 = ops_.n0();
   cap_.resize(ps.size());
   const auto interior = [&](std::int32_t j) { return j >= fluid && !t.surface[j]; };
   parallel_for(fluid, ps.size(), [&](std::int64_t i) {
     if (!t.surface[i]) return;
+    if (cap_rule_.struck(s.n[i], t.n[i], n0, dt)) {
+      cap_[i] = t.p[i];
+      return;
+    }
     cap_[i] = SurfacePressureCap::bound(i, neighbours_.of(i), t.x.data(), t.y.data(), t.p.data(),
                                         ops_.kernel(), interior)
                   .value_or(t.p[i]);

@@ -104,7 +104,7 @@ class Simulation {
   void move_body(double dt);          // the body to t^{n+1}: its law or its dynamics
   void predict(double dt);            // u* = u^n + dt (nu lap u^n + g), r* (Eq. 2.16)
   void compute_number_density();      // n* at r* (Eq. 2.17); walls
-  void compute_pressure();            // free surface, EOS, walls, ghosts (Eq. 2.9, 2.10)
+  void compute_pressure(double dt);   // free surface, EOS, walls, ghosts (Eq. 2.9, 2.10)
   void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19),
                                       // then wall collisions (Koshizuka 1998)
   void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20), + shifting
@@ -112,7 +112,7 @@ class Simulation {
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
   void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
-  void cap_surface_pressure();        // physics/SurfacePressureCap.h
+  void cap_surface_pressure(double);  // physics/SurfacePressureCap.h (dt)
   void find_surface_band();           // the surface's band and its normals
   /// The positions the free surface is found at: r^n where the number density is evolved (the
   /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
@@ -157,8 +157,9 @@ class Simulation {
   FreeSurface_Marrone2010 scan_;
   ShiftingScheme shifting_scheme_;
   ParticleShifting_Sun2017 shifting_;
-  bool shift_in_continuity_;  // the shift's velocity kept for the evolved n's rate
-  bool surface_cap_;          // physics/SurfacePressureCap.h (evolved n only)
+  bool shift_in_continuity_;     // the shift's velocity kept for the evolved n's rate
+  bool surface_cap_;             // physics/SurfacePressureCap.h (evolved n only)
+  SurfacePressureCap cap_rule_;  // its threshold of a struck particle
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
   TimeStepRule rule_, settle_rule_;

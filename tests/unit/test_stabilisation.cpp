@@ -484,5 +484,21 @@ TEST(SurfacePressureCap, ASheetOfSurfaceParticlesKeepsItsPressure) {
   for (const auto& cap : surface_caps(c, nx, 1, p)) EXPECT_FALSE(cap.has_value());
 }
 
+TEST(SurfacePressureCap, AStruckParticleIsLeftAlone) {
+  // DL 5 mm: the threshold sqrt(g / DL) = 44.3 n0 per second. Case I's draining trough raises
+  // a surface particle's n by at most 0.2 n0 per second (its frames at 0.1-0.24 s,
+  // docs/validation.md): capped. A particle landing at 1 m/s closes its neighbours at 1 m/s over
+  // DL, about 200 n0 per second: struck. A falling n is never struck.
+  const SurfacePressureCap cap = SurfacePressureCap::make(9.81, 0.005);
+  EXPECT_NEAR(cap.struck_rate, std::sqrt(9.81 / 0.005), 1e-12);
+  const double n0 = 3.04, dt = 1e-4;
+  EXPECT_FALSE(cap.struck(n0, n0 * (1.0 + 0.2 * dt), n0, dt));
+  EXPECT_FALSE(cap.struck(n0, n0 * (1.0 + 44.0 * dt), n0, dt));
+  EXPECT_TRUE(cap.struck(n0, n0 * (1.0 + 45.0 * dt), n0, dt));
+  EXPECT_TRUE(cap.struck(n0, n0 * (1.0 + 200.0 * dt), n0, dt));
+  EXPECT_FALSE(cap.struck(n0, n0 * (1.0 - 200.0 * dt), n0, dt));
+  EXPECT_FALSE(cap.struck(n0, n0, n0, 0.0));  // the start (dt = 0): the cap applies
+}
+
 }  // namespace
 }  // namespace wcmps

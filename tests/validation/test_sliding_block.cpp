@@ -144,7 +144,7 @@ TEST(SlidingBlock, PrescribedMotionFollowsTheTable) {
 // measured 2.05 cm^2 at 0.26 s. With the defaults the water stays on the block; what is left is
 // a stretched layer under the trough's surface upslope of the block (x ~ 0.06 m), measured
 // 0.22 cm^2 at 0.20 s with the fluid kept DL/2 off the walls, 0.31 cm^2 with it filled up to
-// them and 0.19 cm^2 with the surface pressure cap (2026-12-03), gone by 0.26 s
+// them and 0.19 cm^2 with the surface pressure cap (the default from 2026-12-03), gone by 0.26 s
 // (docs/validation.md has the full runs). The bounds: the
 // old scheme over 1 cm^2 (half of what it makes: the pocket is there); the new one under
 // 0.5 cm^2 (the layer stays thin) and under a fifth of the old one (it makes a sixth).
