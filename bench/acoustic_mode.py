@@ -53,6 +53,13 @@ VARIANTS = [
     ("shifting_in_continuity true, artificial_viscosity 0", 10,
      {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
     ("surface_pressure_cap false", 10, {"surface_pressure_cap": "false"}),
+    ("gradient_renormalisation khayyer2011", 10, {"gradient_renormalisation": '"khayyer2011"'}),
+    ("gradient_renormalisation khayyer2011, c0 x 2", 20,
+     {"gradient_renormalisation": '"khayyer2011"'}),
+    ("gradient_renormalisation khayyer2011-hydrostatic", 10,
+     {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+    ("gradient_renormalisation khayyer2011-hydrostatic, c0 x 2", 20,
+     {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
 ]
 
 

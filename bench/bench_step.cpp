@@ -7,6 +7,8 @@
 //   block moving, from DL 7 mm (27,000 particles) to the fine 2 mm case (316,000).
 // - DamBreak_3a85288, CaseI_3a85288: the same with the scheme of commit 3a85288 (the cures of
 //   docs/method.md "A stabilised step" off), in the same binary: what the cures cost.
+// - DamBreak_Hydrostatic, CaseI_Hydrostatic: the defaults with gradient_renormalisation =
+//   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
@@ -38,11 +40,17 @@ namespace {
 
 using namespace wcmps;
 
-std::unique_ptr<Simulation> make(const std::string& case_dir, double dl, bool old = false) {
+enum class Scheme { Defaults, Old, Hydrostatic };
+
+std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
+                                 Scheme scheme = Scheme::Defaults) {
   CaseSpec spec =
       parse_case_file(std::string(WCMPS_SOURCE_DIR) + "/cases/" + case_dir + "/case.toml");
   spec.dl = dl;
-  if (old) use_scheme_3a85288(spec);
+  if (scheme == Scheme::Old) use_scheme_3a85288(spec);
+  if (scheme == Scheme::Hydrostatic) {
+    spec.gradient_renormalisation = GradientRenormalisation::Hydrostatic;
+  }
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
   auto sim = std::make_unique<Simulation>(spec, build_scene(spec));
@@ -50,10 +58,10 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl, bool ol
   return sim;
 }
 
-void step(benchmark::State& state, const char* case_dir, bool old = false) {
+void step(benchmark::State& state, const char* case_dir, Scheme scheme = Scheme::Defaults) {
   const double dl = static_cast<double>(state.range(0)) * 1e-6;
   set_thread_count(static_cast<int>(state.range(1)));
-  const auto sim = make(case_dir, dl, old);
+  const auto sim = make(case_dir, dl, scheme);
   for (auto _ : state) sim->step(100.0);
   const auto particles = static_cast<double>(sim->particles().size());
   state.counters["particles"] = particles;
@@ -68,10 +76,16 @@ void CaseI(benchmark::State& state) {
   step(state, "caseI");
 }
 void DamBreak_3a85288(benchmark::State& state) {
-  step(state, "dambreak", true);
+  step(state, "dambreak", Scheme::Old);
 }
 void CaseI_3a85288(benchmark::State& state) {
-  step(state, "caseI", true);
+  step(state, "caseI", Scheme::Old);
+}
+void DamBreak_Hydrostatic(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Hydrostatic);
+}
+void CaseI_Hydrostatic(benchmark::State& state) {
+  step(state, "caseI", Scheme::Hydrostatic);
 }
 
 void NeighbourBuild(benchmark::State& state) {
@@ -120,6 +134,16 @@ BENCHMARK(DamBreak_3a85288)
 BENCHMARK(CaseI_3a85288)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{7000, 5000, 3500, 2500, 2000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_Hydrostatic)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_Hydrostatic)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(NeighbourBuild)

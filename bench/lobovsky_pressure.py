@@ -75,7 +75,11 @@ EXPERIMENT = {
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
-           ("surface_pressure_cap false", {"surface_pressure_cap": "false"})]
+           ("surface_pressure_cap false", {"surface_pressure_cap": "false"}),
+           ("gradient_renormalisation khayyer2011",
+            {"gradient_renormalisation": '"khayyer2011"'}),
+           ("gradient_renormalisation khayyer2011-hydrostatic",
+            {"gradient_renormalisation": '"khayyer2011-hydrostatic"'})]
 
 
 def case_text(physics, dl):

@@ -3,11 +3,13 @@
 per period, for schemes side by side.
 
 usage: bench/standing_wave.py [--wcmps build/bin/wcmps] [--out DIR] [--dl 0.01] [--end 6]
-                              [--threads 1] [--schemes 0,1,2,3] [--reuse]
+                              [--threads 1] [--schemes 0,1,2,3] [--reuse] [--amplitude A]
 
 Runs the case with each scheme of SCHEMES below (rows 0-3: the new default, the scheme of commit
 3a85288, each with and without artificial viscosity; rows 4 on: the default with one change each,
-for where the loss comes from; rows 13-16 the artificial viscosity's alpha), reads gauges.csv,
+for where the loss comes from; rows 13-16 the artificial viscosity's alpha; rows 20-23 the
+renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the kernel radius and
+the time step, for what the loss does not depend on), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -63,14 +65,46 @@ SCHEMES = [
     ("new, shifting in continuity, artificial viscosity 0",
      {"shifting_in_continuity": "true", "artificial_viscosity": "0.0"}),
     ("new, surface pressure cap off", {"surface_pressure_cap": "false"}),
+    ("new, gradient renormalised", {"gradient_renormalisation": '"khayyer2011"'}),
+    ("new, gradient renormalised, artificial viscosity 0",
+     {"gradient_renormalisation": '"khayyer2011"', "artificial_viscosity": "0.0"}),
+    ("new, hydrostatic gradient renormalised",
+     {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+    ("new, hydrostatic gradient renormalised, artificial viscosity 0",
+     {"gradient_renormalisation": '"khayyer2011-hydrostatic"', "artificial_viscosity": "0.0"}),
+    # 24-30: what the loss does not depend on (docs/validation.md, run with --amplitude 0.02)
+    ("new, sound speed factor 7", {"sound_speed_factor": "7.0"}),
+    ("new, sound speed factor 14", {"sound_speed_factor": "14.0"}),
+    ("new, artificial viscosity 0, sound speed factor 7",
+     {"artificial_viscosity": "0.0", "sound_speed_factor": "7.0"}),
+    ("new, artificial viscosity 0, sound speed factor 14",
+     {"artificial_viscosity": "0.0", "sound_speed_factor": "14.0"}),
+    ("new, kernel radius 3.1 DL", {"particles.kernel_radius": "3.1"}),
+    ("new, kernel radius 4.0 DL", {"particles.kernel_radius": "4.0"}),
+    ("new, artificial viscosity 0, courant 0.1",
+     {"artificial_viscosity": "0.0", "time.courant": "0.1"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81
 
 
-def case_text(physics, dl):
+def surface_polygon(amplitude):
+    """The fluid polygon of the case with the surface h + a cos(pi x / L) through 51 points."""
+    pts = [(0.0, 0.0), (L, 0.0)] + [(round(L - 0.02 * i, 2),
+                                      H + amplitude * math.cos(math.pi * (L - 0.02 * i) / L))
+                                     for i in range(51)]
+    return "polygon = [" + ", ".join(f"[{x:g}, {y:.6f}]" for x, y in pts) + "]"
+
+
+def case_text(physics, dl, amplitude=None):
     text = CASE.read_text()
     text = re.sub(r"(?m)^spacing = [0-9.e-]+", f"spacing = {dl}", text)
+    if amplitude is not None:
+        text = re.sub(r"(?m)^polygon = .*$", surface_polygon(amplitude), text)
+    parts = "".join(f"{k[10:]} = {v}\n" for k, v in physics.items() if k.startswith("particles."))
+    text = re.sub(r"(?m)^(spacing = .*)$", lambda m: m.group(1) + "\n" + parts.rstrip("\n"), text,
+                  count=1) if parts else text
+    physics = {k: v for k, v in physics.items() if not k.startswith("particles.")}
     for k, v in physics.items():  # keys the case sets already are replaced
         if re.search(rf"(?m)^{k} = ", text):
             text = re.sub(rf"(?m)^{k} = .*$", f"{k} = {v}", text)
@@ -166,6 +200,8 @@ def main():
     ap.add_argument("--out", default="runs/standing-wave-schemes")
     ap.add_argument("--dl", type=float, default=0.01)
     ap.add_argument("--end", type=float, default=6.0)
+    ap.add_argument("--amplitude", type=float,
+                    help="the wave's amplitude a (m) instead of the case's 10 mm")
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--reuse", action="store_true", help="analyse earlier runs in --out")
     ap.add_argument("--schemes", default="0,1,2,3",
@@ -187,7 +223,7 @@ def main():
         run = out / f"scheme{k_s}"
         if not args.reuse:
             case = out / f"scheme{k_s}.toml"
-            case.write_text(case_text(physics, args.dl))
+            case.write_text(case_text(physics, args.dl, args.amplitude))
             r = subprocess.run([args.wcmps, "run", str(case), "-o", str(run), "--overwrite",
                                 "--end-time", str(args.end), "--threads", str(args.threads)],
                                capture_output=True, text=True)

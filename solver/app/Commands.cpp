@@ -251,8 +251,14 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
   for (auto k : spec.output_kinds) kinds += (kinds.empty() ? "" : ", ") + std::string(kind_name(k));
   line("outputs             %zu frames (%g ... %g s); fields: %s; particles: %s", times.size(),
        times.front(), times.back(), fields.c_str(), kinds.c_str());
-  line("pressure gradient   %s",
-       std::string(scheme_key(kPressureGradientSchemes, spec.pressure_gradient)).c_str());
+  std::string gradient(scheme_key(kPressureGradientSchemes, spec.pressure_gradient));
+  if (spec.gradient_renormalisation != GradientRenormalisation::None) {
+    gradient +=
+        ", renormalised (" +
+        std::string(scheme_key(kGradientRenormalisationSchemes, spec.gradient_renormalisation)) +
+        ")";
+  }
+  line("pressure gradient   %s", gradient.c_str());
   line("domain              (%g, %g) ... (%g, %g) m", lo.x, lo.y, hi.x, hi.y);
 }
 

@@ -11,6 +11,7 @@
 #include "core/SchemeTable.h"
 #include "core/Vec2.h"
 #include "operators/MpsOperators.h"
+#include "physics/GradientRenormalisation_Khayyer2011.h"
 
 namespace wcmps {
 
@@ -53,12 +54,20 @@ struct PressureGradient_Koshizuka1996 {
 /// system at rest cannot gain energy from it, and pair forces cancel. kSwitch: the
 /// tensile-instability control of Sun et al. (2018) (physics/NegativePressure_Sun2018.h): a
 /// particle's own term p_i/n_i^2 taken as its absolute value, so that pairs do not attract where
-/// p_i < 0.
-template <bool kSwitch>
+/// p_i < 0. kRenormalisation: outside the free-surface band and away from the walls, the
+/// difference part renormalised or the hydrostatic gradient read exactly
+/// (physics/GradientRenormalisation_Khayyer2011.h).
+template <bool kSwitch, GradientRenormalisation kRenormalisation = GradientRenormalisation::None>
 struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
   /// With the switch: particles it leaves out (1), the free-surface region (Sun et al. 2018).
   const std::uint8_t* exempt = nullptr;
+  /// With a renormalisation: the free-surface band (1) and the fluid with a boundary particle in
+  /// its list (1), where it is not applied.
+  const std::uint8_t* band = nullptr;
+  const std::uint8_t* near_wall = nullptr;
+  /// rho0 g: the hydrostatic gradient that the "khayyer2011-hydrostatic" form reads exactly.
+  Vec2 rho_g;
 
   double own(const double* p_over_n2, std::int64_t i) const {
     if constexpr (kSwitch) {
@@ -68,10 +77,28 @@ struct PressureGradient_Suzuki2007 {
   }
   Vec2 gradient(const MpsOperators& ops, std::int64_t i, IdRange nb, const double* x,
                 const double* y, const double* p_over_n2) const {
-    return ops.gradient_variational(i, nb, x, y, p_over_n2, own(p_over_n2, i));
+    return gradient_part(ops, i, nb, nb, x, y, p_over_n2);
   }
-  Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange /*nb*/, IdRange part,
+  /// The part of gradient() that comes from the neighbours in `part` (a subset of nb).
+  Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange nb, IdRange part,
                      const double* x, const double* y, const double* p_over_n2) const {
+    if constexpr (kRenormalisation != GradientRenormalisation::None) {
+      if (!(band && band[i]) && !(near_wall && near_wall[i])) {
+        using R = GradientRenormalisation_Khayyer2011;
+        const double c = ops.gradient_correction() * ops.n0();
+        const double ti = own(p_over_n2, i);
+        if constexpr (kRenormalisation == GradientRenormalisation::Khayyer2011) {
+          const VariationalSums s = ops.variational_sums(i, nb, part, x, y, p_over_n2);
+          const Vec2 d = R::renormalised(s.m, {s.dx, s.dy});
+          const double t = ti + p_over_n2[i];
+          return {c * (d.x + t * s.sx), c * (d.y + t * s.sy)};
+        } else {
+          const VariationalMoments s = ops.variational_moments(i, nb, part, x, y, p_over_n2, ti);
+          const Vec2 h = R::hydrostatic(s.m, rho_g);
+          return {c * s.gx + h.x, c * s.gy + h.y};
+        }
+      }
+    }
     return ops.gradient_variational(i, part, x, y, p_over_n2, own(p_over_n2, i));
   }
 };
@@ -87,17 +114,46 @@ inline constexpr SchemeEntry<PressureGradientScheme> kPressureGradientSchemes[] 
      "Suzuki, Koshizuka & Oka (2007), Comput. Methods Appl. Mech. Engrg. 196, 2876-2894"},
 };
 
-/// Calls f(Scheme{}) with the scheme type that `s` names; `tensile_switch` selects the
-/// variational gradient with the switch of Sun et al. (2018) (the other two have no own term to
-/// switch: they are unchanged).
+/// What the variational gradient takes from the step besides its inputs.
+struct GradientOptions {
+  bool tensile_switch = false;
+  const std::uint8_t* exempt = nullptr;  ///< the switch's band
+  GradientRenormalisation renormalisation = GradientRenormalisation::None;
+  const std::uint8_t* band = nullptr;       ///< the free-surface band, not renormalised
+  const std::uint8_t* near_wall = nullptr;  ///< fluid near a boundary, not renormalised
+  Vec2 rho_g;                               ///< rho0 g
+};
+
+/// Calls f(Scheme{}) with the scheme type that `s` names, the variational gradient with the
+/// switch of Sun et al. (2018) and the renormalisation that `o` selects (the other two have no
+/// own term to switch and are not renormalised: they are unchanged).
 template <class F>
-decltype(auto) with_pressure_gradient(PressureGradientScheme s, bool tensile_switch,
-                                      const std::uint8_t* exempt, F&& f) {
+decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOptions& o, F&& f) {
+  using R = GradientRenormalisation;
   switch (s) {
     case PressureGradientScheme::Koshizuka1996:
       return f(PressureGradient_Koshizuka1996{});
     case PressureGradientScheme::Suzuki2007:
-      if (tensile_switch) return f(PressureGradient_Suzuki2007<true>{exempt});
+      switch (o.renormalisation) {
+        case R::Khayyer2011:
+          if (o.tensile_switch) {
+            return f(PressureGradient_Suzuki2007<true, R::Khayyer2011>{
+                o.exempt, o.band, o.near_wall, {}});
+          }
+          return f(
+              PressureGradient_Suzuki2007<false, R::Khayyer2011>{nullptr, o.band, o.near_wall, {}});
+        case R::Hydrostatic:
+          if (o.tensile_switch) {
+            return f(PressureGradient_Suzuki2007<true, R::Hydrostatic>{o.exempt, o.band,
+                                                                       o.near_wall, o.rho_g});
+          }
+          return f(PressureGradient_Suzuki2007<false, R::Hydrostatic>{nullptr, o.band, o.near_wall,
+                                                                      o.rho_g});
+        case R::None:
+          break;
+      }
+      if (o.tensile_switch)
+        return f(PressureGradient_Suzuki2007<true>{o.exempt, nullptr, nullptr, {}});
       return f(PressureGradient_Suzuki2007<false>{});
     case PressureGradientScheme::Koshizuka1998Min:
       break;

@@ -625,6 +625,14 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.shifting = pick(kShiftingSchemes, "shifting", c.shifting);
     c.shifting_in_continuity = r.boolean("shifting_in_continuity", c.shifting_in_continuity);
     c.surface_pressure_cap = r.boolean("surface_pressure_cap", c.surface_pressure_cap);
+    c.gradient_renormalisation = pick(kGradientRenormalisationSchemes, "gradient_renormalisation",
+                                      c.gradient_renormalisation);
+    if (c.gradient_renormalisation != GradientRenormalisation::None &&
+        c.pressure_gradient != PressureGradientScheme::Suzuki2007) {
+      r.fail_key("gradient_renormalisation",
+                 "renormalises the variational gradient only: it needs pressure_gradient = "
+                 "\"suzuki2007-variational\"");
+    }
     r.finish();
   }
   {

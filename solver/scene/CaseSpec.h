@@ -202,6 +202,10 @@ struct CaseSpec {
   /// I's cavity a third smaller, the quiet benchmarks unchanged (docs/validation.md, "A surface
   /// particle that pushes itself off").
   bool surface_pressure_cap = true;
+  /// The variational gradient made to read rho g ("khayyer2011-hydrostatic") or any linear
+  /// pressure ("khayyer2011") exactly on a strained arrangement, away from the surface band and
+  /// the walls (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
+  GradientRenormalisation gradient_renormalisation = GradientRenormalisation::None;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide

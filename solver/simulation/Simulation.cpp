@@ -64,6 +64,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       wall_scheme_(spec.wall_pressure),
       pressure_bound_(PressureBound::make(spec.negative_pressure, spec.pressure_floor)),
       tensile_switch_(spec.negative_pressure == NegativePressure::Sun2018Switch),
+      renormalisation_(spec.gradient_renormalisation),
       density_scheme_(spec.number_density),
       continuity_(NumberDensity_Jandaghian2020::make(spec.density_diffusion, spec.re(),
                                                      scene_.sound_speed, scene_.lattice.lambda,
@@ -124,7 +125,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   }
   if (shift_in_continuity_) ps.track_shift();
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
-  if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_) {
+  if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_ ||
+      renormalisation_ != GradientRenormalisation::None) {
     band_x_.resize(ps.size());
     band_y_.resize(ps.size());
     in_band_.resize(ps.size());
@@ -165,7 +167,7 @@ void Simulation::compute_initial_pressure() {
   ps.now.n = ps.next.n;
   ps.now.surface = ps.next.surface;
   if (body_) {
-    with_pressure_gradient(gradient_scheme_, tensile_switch_, switch_exempt(), [&](auto scheme) {
+    with_pressure_gradient(gradient_scheme_, gradient_options(), [&](auto scheme) {
       using Scheme = decltype(scheme);
       body_->commit(body_->state(), body_force(scheme, gradient_input<Scheme>()));
     });
@@ -657,7 +659,7 @@ void Simulation::correct(double dt) {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   const double c = -dt / density_;
-  with_pressure_gradient(gradient_scheme_, tensile_switch_, switch_exempt(), [&](auto scheme) {
+  with_pressure_gradient(gradient_scheme_, gradient_options(), [&](auto scheme) {
     using Scheme = decltype(scheme);
     const double* input = gradient_input<Scheme>();
     // The wall collisions of i need only its corrected velocity and the boundary particles'

@@ -130,8 +130,14 @@ class Simulation {
   const double* gradient_input();  // p, or p/n^2 for the variational gradient
   template <class Scheme>
   BodyForce body_force(const Scheme& scheme, const double* input);  // reaction of pair forces
-  /// Particles the tensile-instability switch leaves out: the free-surface band.
-  const std::uint8_t* switch_exempt() const { return tensile_switch_ ? in_band_.data() : nullptr; }
+  /// What the pressure gradient takes besides its inputs: the tensile-instability switch and the
+  /// particles it leaves out (the free-surface band), the renormalisation and the particles it
+  /// leaves out (the band, and the fluid near a boundary), rho0 g.
+  GradientOptions gradient_options() const {
+    return {tensile_switch_,   tensile_switch_ ? in_band_.data() : nullptr,
+            renormalisation_,  in_band_.data(),
+            near_wall_.data(), gravity_ * density_};
+  }
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();
     return (j >= b.walls.first && j < b.walls.second) ||
@@ -149,6 +155,7 @@ class Simulation {
   WallPressureScheme wall_scheme_;
   PressureBound pressure_bound_;
   bool tensile_switch_;
+  GradientRenormalisation renormalisation_;
   NumberDensityScheme density_scheme_;
   NumberDensity_Jandaghian2020 continuity_;
   DensitySumsSetup sums_setup_;

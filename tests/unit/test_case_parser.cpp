@@ -147,6 +147,10 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                "out of range [0, 0.01]");
   expect_error(test::minimal_case_text() + "\n[output]\nfields = [\"speed\"]\n", 18,
                "unknown field \"speed\"");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\npressure_gradient = \"koshizuka1996\"\n"
+                   "gradient_renormalisation = \"khayyer2011\"\n",
+               19, "renormalises the variational gradient only");
   expect_error(test::minimal_case_text() + "\n[physics]\npressure_gradient = \"sph\"\n", 18,
                "\"sph\" is not one of");
   expect_error(replace(test::minimal_case_text(), "end = 0.01",
