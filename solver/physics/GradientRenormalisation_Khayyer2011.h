@@ -28,8 +28,9 @@
 /// Engrg. 139, 375-408) in SPH: the difference part multiplied by L_i = M_i^-1, exact for any
 /// linear field (they correct the whole MPS gradient of Eq. 2.18; the split is ours). At an
 /// impact the difference part is the impact's, and L_i rescales it where the arrangement is
-/// crushed: the Lobovsky dam break stopped at 1.20 s (n* > 1.2 n0 where the plunging jet
-/// re-enters).
+/// crushed: the Lobovsky dam break stopped at 0.91 s (a splash particle thrown out of the
+/// domain; with the fluid near the walls corrected too, at 1.20 s, n* > 1.2 n0 where the
+/// plunging jet re-enters).
 ///
 /// "khayyer2011-hydrostatic" (this project's form): the correction applied to the hydrostatic
 /// gradient alone. The variational gradient reads rho g as M_i rho g, so adding
