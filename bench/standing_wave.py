@@ -101,9 +101,10 @@ def case_text(physics, dl, amplitude=None):
     text = re.sub(r"(?m)^spacing = [0-9.e-]+", f"spacing = {dl}", text)
     if amplitude is not None:
         text = re.sub(r"(?m)^polygon = .*$", surface_polygon(amplitude), text)
-    parts = "".join(f"{k[10:]} = {v}\n" for k, v in physics.items() if k.startswith("particles."))
-    text = re.sub(r"(?m)^(spacing = .*)$", lambda m: m.group(1) + "\n" + parts.rstrip("\n"), text,
-                  count=1) if parts else text
+    # "particles.KEY" goes to [particles], after the spacing
+    for k, v in physics.items():
+        if k.startswith("particles."):
+            text = re.sub(r"(?m)^(spacing = .*)$", rf"\1\n{k[10:]} = {v}", text, count=1)
     physics = {k: v for k, v in physics.items() if not k.startswith("particles.")}
     for k, v in physics.items():  # keys the case sets already are replaced
         if re.search(rf"(?m)^{k} = ", text):
