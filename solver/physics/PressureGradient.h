@@ -117,9 +117,9 @@ inline constexpr SchemeEntry<PressureGradientScheme> kPressureGradientSchemes[] 
 /// What the variational gradient takes from the step besides its inputs.
 struct GradientOptions {
   bool tensile_switch = false;
-  const std::uint8_t* exempt = nullptr;  ///< the switch's band
   GradientRenormalisation renormalisation = GradientRenormalisation::None;
-  const std::uint8_t* band = nullptr;       ///< the free-surface band, not renormalised
+  /// The free-surface band: left out by the switch and by the renormalisation.
+  const std::uint8_t* band = nullptr;
   const std::uint8_t* near_wall = nullptr;  ///< fluid near a boundary, not renormalised
   Vec2 rho_g;                               ///< rho0 g
 };
@@ -130,6 +130,7 @@ struct GradientOptions {
 template <class F>
 decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOptions& o, F&& f) {
   using R = GradientRenormalisation;
+  const std::uint8_t* exempt = o.band;  // the switch's
   switch (s) {
     case PressureGradientScheme::Koshizuka1996:
       return f(PressureGradient_Koshizuka1996{});
@@ -137,15 +138,15 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
       switch (o.renormalisation) {
         case R::Khayyer2011:
           if (o.tensile_switch) {
-            return f(PressureGradient_Suzuki2007<true, R::Khayyer2011>{
-                o.exempt, o.band, o.near_wall, {}});
+            return f(
+                PressureGradient_Suzuki2007<true, R::Khayyer2011>{exempt, o.band, o.near_wall, {}});
           }
           return f(
               PressureGradient_Suzuki2007<false, R::Khayyer2011>{nullptr, o.band, o.near_wall, {}});
         case R::Hydrostatic:
           if (o.tensile_switch) {
-            return f(PressureGradient_Suzuki2007<true, R::Hydrostatic>{o.exempt, o.band,
-                                                                       o.near_wall, o.rho_g});
+            return f(PressureGradient_Suzuki2007<true, R::Hydrostatic>{exempt, o.band, o.near_wall,
+                                                                       o.rho_g});
           }
           return f(PressureGradient_Suzuki2007<false, R::Hydrostatic>{nullptr, o.band, o.near_wall,
                                                                       o.rho_g});
@@ -153,7 +154,7 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
           break;
       }
       if (o.tensile_switch)
-        return f(PressureGradient_Suzuki2007<true>{o.exempt, nullptr, nullptr, {}});
+        return f(PressureGradient_Suzuki2007<true>{exempt, nullptr, nullptr, {}});
       return f(PressureGradient_Suzuki2007<false>{});
     case PressureGradientScheme::Koshizuka1998Min:
       break;

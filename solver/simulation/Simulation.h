@@ -134,9 +134,8 @@ class Simulation {
   /// particles it leaves out (the free-surface band), the renormalisation and the particles it
   /// leaves out (the band, and the fluid near a boundary), rho0 g.
   GradientOptions gradient_options() const {
-    return {tensile_switch_,   tensile_switch_ ? in_band_.data() : nullptr,
-            renormalisation_,  in_band_.data(),
-            near_wall_.data(), gravity_ * density_};
+    return {tensile_switch_, renormalisation_, in_band_.data(), near_wall_.data(),
+            gravity_ * density_};
   }
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();

@@ -509,6 +509,23 @@ TEST(GradientRenormalisation, LeavesTheBandTheWallsAndAHalfKernelAlone) {
   EXPECT_NEAR(unflagged.y, plain.y, 1e-9 * 9810.0);
 }
 
+/// The parts of i's gradient over its neighbours left and right of it add up to the whole, each
+/// renormalised by the whole neighbourhood (the body's share of a gradient is such a part).
+template <class Gradient>
+void expect_parts_add_up(const Gradient& g, const MpsOperators& ops, const Cloud& c, std::int64_t i,
+                         const std::vector<double>& q) {
+  const auto nb = c.list.of(i);
+  std::vector<std::int32_t> left, right;
+  for (const std::int32_t j : nb) (c.x[j] < c.x[i] ? left : right).push_back(j);
+  const Vec2 whole = g.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data());
+  const Vec2 a = g.gradient_part(ops, i, nb, {left.data(), left.data() + left.size()}, c.x.data(),
+                                 c.y.data(), q.data());
+  const Vec2 b = g.gradient_part(ops, i, nb, {right.data(), right.data() + right.size()},
+                                 c.x.data(), c.y.data(), q.data());
+  EXPECT_NEAR(a.x + b.x, whole.x, 1e-8 * 9810.0);
+  EXPECT_NEAR(a.y + b.y, whole.y, 1e-8 * 9810.0);
+}
+
 TEST(GradientRenormalisation, TheBodysPartsAddUpToTheWhole) {
   // The body's force is the part of a fluid particle's gradient over the body's particles; the
   // parts over a split of the neighbours must add up to the gradient over all of them, each
@@ -519,16 +536,9 @@ TEST(GradientRenormalisation, TheBodysPartsAddUpToTheWhole) {
   const auto q = linear_q(c, 4000.0, 500.0, -9810.0);
   const auto i = at(7, 7, 15);
   const auto nb = c.list.of(i);
-  std::vector<std::int32_t> left, right;
-  for (const std::int32_t j : nb) (c.x[j] < c.x[i] ? left : right).push_back(j);
   const PressureGradient_Suzuki2007<true, GradientRenormalisation::Khayyer2011> g{};
+  expect_parts_add_up(g, ops, c, i, q);
   const Vec2 whole = g.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data());
-  const Vec2 a = g.gradient_part(ops, i, nb, {left.data(), left.data() + left.size()}, c.x.data(),
-                                 c.y.data(), q.data());
-  const Vec2 b = g.gradient_part(ops, i, nb, {right.data(), right.data() + right.size()},
-                                 c.x.data(), c.y.data(), q.data());
-  EXPECT_NEAR(a.x + b.x, whole.x, 1e-8 * 9810.0);
-  EXPECT_NEAR(a.y + b.y, whole.y, 1e-8 * 9810.0);
   // Jittered by 15 %, the renormalised difference part still reads the linear field exactly;
   // the rest is the own term 2 q_i sum W' e_ij, the push of an arrangement that is not symmetric
   // about i (positive pressure: the switch's |q_i| is q_i).
@@ -562,15 +572,7 @@ TEST(GradientRenormalisation, TheHydrostaticFormReadsRhoGExactly) {
   EXPECT_NEAR(both.y, rho_g.y + s.m.mxy * 500.0, 1e-8 * 9810.0);
   // The strain shows in M (so the checks above could fail).
   EXPECT_GT(std::abs(s.m.mxx - 1.0) + std::abs(s.m.mxy), 0.02);
-  // The body's parts add up to the whole.
-  std::vector<std::int32_t> left, right;
-  for (const std::int32_t j : nb) (c.x[j] < c.x[i] ? left : right).push_back(j);
-  const Vec2 a = g.gradient_part(ops, i, nb, {left.data(), left.data() + left.size()}, c.x.data(),
-                                 c.y.data(), pushed.data());
-  const Vec2 b = g.gradient_part(ops, i, nb, {right.data(), right.data() + right.size()},
-                                 c.x.data(), c.y.data(), pushed.data());
-  EXPECT_NEAR(a.x + b.x, both.x, 1e-8 * 9810.0);
-  EXPECT_NEAR(a.y + b.y, both.y, 1e-8 * 9810.0);
+  expect_parts_add_up(g, ops, c, i, pushed);
 }
 
 TEST(PressureBound, ZeroClampsAndTheOthersKeepDownToTheFloor) {
