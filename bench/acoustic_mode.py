@@ -60,6 +60,8 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
     ("gradient_renormalisation khayyer2011-hydrostatic, c0 x 2", 20,
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+    ("density_rate randles1996", 10, {"density_rate": '"randles1996"'}),
+    ("density_rate randles1996, c0 x 2", 20, {"density_rate": '"randles1996"'}),
 ]
 
 

@@ -9,6 +9,8 @@
 //   docs/method.md "A stabilised step" off), in the same binary: what the cures cost.
 // - DamBreak_Hydrostatic, CaseI_Hydrostatic: the defaults with gradient_renormalisation =
 //   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
+// - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
+//   thread, DL 5 and 2 mm): what the band's renormalised rate costs.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
@@ -40,7 +42,7 @@ namespace {
 
 using namespace wcmps;
 
-enum class Scheme { Defaults, Old, Hydrostatic };
+enum class Scheme { Defaults, Old, Hydrostatic, BandRate };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
                                  Scheme scheme = Scheme::Defaults) {
@@ -51,6 +53,7 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
   if (scheme == Scheme::Hydrostatic) {
     spec.gradient_renormalisation = GradientRenormalisation::Hydrostatic;
   }
+  if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
   auto sim = std::make_unique<Simulation>(spec, build_scene(spec));
@@ -86,6 +89,12 @@ void DamBreak_Hydrostatic(benchmark::State& state) {
 }
 void CaseI_Hydrostatic(benchmark::State& state) {
   step(state, "caseI", Scheme::Hydrostatic);
+}
+void DamBreak_BandRate(benchmark::State& state) {
+  step(state, "dambreak", Scheme::BandRate);
+}
+void CaseI_BandRate(benchmark::State& state) {
+  step(state, "caseI", Scheme::BandRate);
 }
 
 void NeighbourBuild(benchmark::State& state) {
@@ -142,6 +151,16 @@ BENCHMARK(DamBreak_Hydrostatic)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(CaseI_Hydrostatic)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_BandRate)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_BandRate)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)

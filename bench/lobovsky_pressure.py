@@ -79,7 +79,8 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("gradient_renormalisation khayyer2011",
             {"gradient_renormalisation": '"khayyer2011"'}),
            ("gradient_renormalisation khayyer2011-hydrostatic",
-            {"gradient_renormalisation": '"khayyer2011-hydrostatic"'})]
+            {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+           ("density_rate randles1996", {"density_rate": '"randles1996"'})]
 
 
 def case_text(physics, dl):

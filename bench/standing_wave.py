@@ -9,7 +9,7 @@ Runs the case with each scheme of SCHEMES below (rows 0-3: the new default, the 
 3a85288, each with and without artificial viscosity; rows 4 on: the default with one change each,
 for where the loss comes from; rows 13-16 the artificial viscosity's alpha; rows 20-23 the
 renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the kernel radius and
-the time step, for what the loss does not depend on), reads gauges.csv,
+the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -83,6 +83,10 @@ SCHEMES = [
     ("new, kernel radius 4.0 DL", {"particles.kernel_radius": "4.0"}),
     ("new, artificial viscosity 0, courant 0.1",
      {"artificial_viscosity": "0.0", "time.courant": "0.1"}),
+    # 31-32: the band's rate renormalised (physics/DensityRate_Randles1996.h)
+    ("new, density rate randles1996", {"density_rate": '"randles1996"'}),
+    ("new, density rate randles1996, artificial viscosity 0",
+     {"density_rate": '"randles1996"', "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

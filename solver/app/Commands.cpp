@@ -259,6 +259,10 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
         ")";
   }
   line("pressure gradient   %s", gradient.c_str());
+  if (spec.density_rate != DensityRateScheme::Summed) {
+    line("density rate        %s in the surface band",
+         std::string(scheme_key(kDensityRateSchemes, spec.density_rate)).c_str());
+  }
   line("domain              (%g, %g) ... (%g, %g) m", lo.x, lo.y, hi.x, hi.y);
 }
 

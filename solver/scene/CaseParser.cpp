@@ -633,6 +633,13 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                  "renormalises the variational gradient only: it needs pressure_gradient = "
                  "\"suzuki2007-variational\"");
     }
+    c.density_rate = pick(kDensityRateSchemes, "density_rate", c.density_rate);
+    if (c.density_rate != DensityRateScheme::Summed &&
+        c.number_density != NumberDensityScheme::Continuity) {
+      r.fail_key("density_rate",
+                 "corrects the rate of an evolved number density only: it needs number_density = "
+                 "\"continuity\"");
+    }
     r.finish();
   }
   {

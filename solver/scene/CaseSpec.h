@@ -14,6 +14,7 @@
 #include "core/Vec2.h"
 #include "particles/Fields.h"
 #include "particles/ParticleKind.h"
+#include "physics/DensityRate_Randles1996.h"
 #include "physics/FreeSurface_Marrone2010.h"
 #include "physics/NegativePressure_Sun2018.h"
 #include "physics/NumberDensity_Jandaghian2020.h"
@@ -206,6 +207,10 @@ struct CaseSpec {
   /// pressure ("khayyer2011") exactly on a strained arrangement, away from the surface band and
   /// the walls (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
   GradientRenormalisation gradient_renormalisation = GradientRenormalisation::None;
+  /// The evolved n's rate in the free-surface band: "summed" (d/dt of the summed n) or
+  /// "randles1996" (the divergence renormalised by the kernel's moments, limited by the summed
+  /// rate: physics/DensityRate_Randles1996.h); continuity scheme only.
+  DensityRateScheme density_rate = DensityRateScheme::Summed;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide

@@ -69,6 +69,9 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       continuity_(NumberDensity_Jandaghian2020::make(spec.density_diffusion, spec.re(),
                                                      scene_.sound_speed, scene_.lattice.lambda,
                                                      scene_.lattice.n0)),
+      band_rate_(spec.density_rate == DensityRateScheme::Randles1996 &&
+                 spec.number_density == NumberDensityScheme::Continuity),
+      band_rate_rule_{scene_.lattice.n0 / scene_.lattice.gradient_correction},
       sums_setup_{
           Kernel(spec.re()), 1.0 / scene_.lattice.concentration_sum,
           spec.shifting != ShiftingScheme::None ? ParticleShifting_Sun2017::kClumpingR : 0.0,
@@ -126,7 +129,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   if (shift_in_continuity_) ps.track_shift();
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
   if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_ ||
-      renormalisation_ != GradientRenormalisation::None) {
+      renormalisation_ != GradientRenormalisation::None || band_rate_) {
     band_x_.resize(ps.size());
     band_y_.resize(ps.size());
     in_band_.resize(ps.size());
@@ -552,9 +555,15 @@ void Simulation::compute_pressure(double dt) {
     const bool on_surface = scan ? scan_.is_surface(i, neighbours_.of(i), t.x.data(), t.y.data(),
                                                     summed_n(i), {grad_x_[i], grad_y_[i]}, fills)
                                  : surface_.is_surface(summed_n(i));
-    const double p = eos_.pressure(t.n[i]);
-    t.p[i] = !on_surface ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
     t.surface[i] = on_surface ? 1 : 0;
+  });
+  // The band of this step's surface (the tensile switch, the shifting), and in it the evolved
+  // n's rate renormalised before the equation of state reads n.
+  if (!band_x_.empty()) find_surface_band();
+  if (band_rate_) correct_band_rate(dt);
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+    const double p = eos_.pressure(t.n[i]);
+    t.p[i] = !t.surface[i] ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
   });
   if (surface_cap_) cap_surface_pressure(dt);
   if (wall_scheme_ == WallPressureScheme::Eos) {
@@ -581,7 +590,21 @@ void Simulation::compute_pressure(double dt) {
   // Ghost particles: the pressure of their wall particle along the wall normal (section 2.6).
   parallel_for(ps.wall_end(), ps.fluid_begin(),
                [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
-  if (!band_x_.empty()) find_surface_band();
+}
+
+void Simulation::correct_band_rate(double dt) {
+  // The prediction's pass advanced n with the summed rate at (r^n, u^n); in the band, that rate
+  // is replaced by DensityRate_Randles1996's from the same pairs. Each particle writes its own n.
+  ParticleSet& ps = scene_.particles;
+  const ParticleState& s = ps.now;
+  ParticleState& t = ps.next;
+  const std::int64_t fluid = ps.fluid_begin();
+  parallel_for(0, static_cast<std::int64_t>(band_.size()), [&](std::int64_t k) {
+    const std::int32_t i = band_[static_cast<std::size_t>(k)];
+    const auto sums = DensityRate_Randles1996::sums(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
+                                                    s.y.data(), s.u.data(), s.v.data(), fluid);
+    t.n[i] += dt * (band_rate_rule_.rate(sums) - sums.summed());
+  });
 }
 
 void Simulation::cap_surface_pressure(double dt) {

@@ -13,6 +13,7 @@
 #include "neighbours/NeighbourList.h"
 #include "operators/DensitySums.h"
 #include "operators/MpsOperators.h"
+#include "physics/DensityRate_Randles1996.h"
 #include "physics/EquationOfState.h"
 #include "physics/FreeSurface.h"
 #include "physics/FreeSurface_Marrone2010.h"
@@ -113,6 +114,7 @@ class Simulation {
   void compute_initial_pressure();    // n and p of the initial state, for its frame
   void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
   void cap_surface_pressure(double);  // physics/SurfacePressureCap.h (dt)
+  void correct_band_rate(double);     // physics/DensityRate_Randles1996.h (dt)
   void find_surface_band();           // the surface's band and its normals
   /// The positions the free surface is found at: r^n where the number density is evolved (the
   /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
@@ -157,6 +159,10 @@ class Simulation {
   GradientRenormalisation renormalisation_;
   NumberDensityScheme density_scheme_;
   NumberDensity_Jandaghian2020 continuity_;
+  // The evolved n's rate in the surface band (physics/DensityRate_Randles1996.h): on under the
+  // continuity scheme with density_rate = "randles1996".
+  bool band_rate_;
+  DensityRate_Randles1996 band_rate_rule_;
   DensitySumsSetup sums_setup_;
   DensityInputs density_inputs_;  // of the prediction's pass (its n set at each step)
   FreeSurfaceScheme surface_scheme_;

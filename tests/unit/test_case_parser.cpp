@@ -151,6 +151,10 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "\n[physics]\npressure_gradient = \"koshizuka1996\"\n"
                    "gradient_renormalisation = \"khayyer2011\"\n",
                19, "renormalises the variational gradient only");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\nnumber_density = \"summation\"\n"
+                   "density_rate = \"randles1996\"\n",
+               19, "corrects the rate of an evolved number density only");
   expect_error(test::minimal_case_text() + "\n[physics]\npressure_gradient = \"sph\"\n", 18,
                "\"sph\" is not one of");
   expect_error(replace(test::minimal_case_text(), "end = 0.01",

@@ -118,6 +118,37 @@ TEST(Simulation, TheGradientRenormalisationActsInTheStep) {
   set_thread_count(2);
 }
 
+// The band's rate reaches the step: on the falling column (its surface drawn down and spreading)
+// it changes n; in still water without gravity (no velocity, both rates 0) it changes nothing.
+TEST(Simulation, TheBandRateActsInTheStep) {
+  set_thread_count(1);
+  std::string text = test::minimal_case_text();
+  text.replace(text.find("max = [0.2, 0.1]"), 16, "max = [0.1, 0.1]");
+  const auto run = [&](DensityRateScheme rate, Vec2 g) {
+    CaseSpec spec = parse_case_text(text, "column.toml");
+    spec.density_rate = rate;
+    spec.gravity = g;
+    spec.sound_speed = 10.0;
+    Simulation sim(spec, build_scene(spec));
+    for (int k = 0; k < 100; ++k) sim.step(1.0);
+    return sim.particles().now;
+  };
+  const auto largest_difference = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double d = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+    return d;
+  };
+  const Vec2 g{0.0, -9.81};
+  const ParticleState summed = run(DensityRateScheme::Summed, g);
+  const ParticleState band = run(DensityRateScheme::Randles1996, g);
+  EXPECT_GT(largest_difference(band.n, summed.n), 1e-6);
+  const ParticleState still = run(DensityRateScheme::Summed, {});
+  const ParticleState still_band = run(DensityRateScheme::Randles1996, {});
+  EXPECT_EQ(largest_difference(still_band.n, still.n), 0.0);
+  EXPECT_EQ(largest_difference(still_band.u, still.u), 0.0);
+  set_thread_count(2);
+}
+
 TEST(Simulation, FluidWithoutForcesMovesUniformly) {
   // No gravity, a block at n = n0 (p = 0 everywhere) moving at (0.3, -0.2) m/s, far from the
   // one wall: nothing may act on it.
