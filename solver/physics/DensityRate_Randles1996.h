@@ -47,8 +47,8 @@
 ///
 ///   The trade (docs/validation.md, "The band's rate renormalised"): a rate that is not d/dt of
 ///   the summed n is no longer the partner of the variational gradient's energy, and the
-///   pressure can do work on the particles: the flat tank's still water moves twice as much and
-///   its breathing mode grows, and the standing wave loses more. Off by default.
+///   pressure can do work on the particles: the flat tank's still water moves about twice as
+///   much and its breathing mode grows, and the standing wave loses more. Off by default.
 
 #include <algorithm>
 #include <cmath>
