@@ -11,10 +11,15 @@
 
 namespace wcmps {
 
-/// max(q, 0), exactly, written as arithmetic so that loops using it have no branch and
-/// vectorise (GCC 12 does not vectorise std::max(0.0, q) for SSE2).
+/// max(q, 0), exactly and without a branch, so that loops using it vectorise. With AVX it is a
+/// select (one instruction); for SSE2, where GCC 12 vectorises neither the select nor
+/// std::max(0.0, q), it is written as arithmetic (three).
 inline double ramp(double q) {
+#if defined(__AVX__)
+  return q < 0.0 ? 0.0 : q;
+#else
   return 0.5 * (q + std::fabs(q));
+#endif
 }
 
 struct WeightCubic_Shakibaeinia2012 {
