@@ -1,8 +1,8 @@
 #pragma once
 /// @file DensityRate_Randles1996.h
-/// @brief The evolved number density's rate in the free-surface band, with the velocity
-/// divergence renormalised by the kernel's moment matrix and limited by the summed rate
-/// ([physics] density_rate).
+/// @brief The evolved number density's rate and its partner, the variational pressure
+/// gradient, with the kernel gradient renormalised by the kernel's moment matrix in the
+/// free-surface band ([physics] density_rate).
 ///
 /// - "summed" (physics/NumberDensity_Jandaghian2020.h): Dn_i/Dt = sum_j W'(r_ij) (r_ij . u_ij) /
 ///   r_ij, exactly d/dt of the summed n. With the pair sums (x = r_j - r_i, u = u_j - u_i)
@@ -21,34 +21,42 @@
 ///   hydrostatic pressure, pushed the top row off the water and opened the cavity
 ///   (docs/validation.md, "The rows under the surface compressed by a cut kernel").
 /// - "randles1996": in the free-surface band (the surface particles and the fluid within re of
-///   one, Simulation::find_surface_band) the divergence of the linear field the sums see, the
-///   normalisation of Randles & Libersky (1996, Comput. Methods Appl. Mech. Engrg. 139, 375-408;
-///   the kernel gradient correction of Bonet & Lok 1999),
+///   one, Simulation::find_surface_band) the kernel gradient corrected by the moment matrix,
+///   W'(r_ij) e_ij -> L_i W'(r_ij) e_ij with L_i = m P_c^-1 (the normalisation of Randles &
+///   Libersky 1996, Comput. Methods Appl. Mech. Engrg. 139, 375-408; the correction of Bonet &
+///   Lok 1999, Comput. Methods Appl. Mech. Engrg. 180, 97-115), P_c being P with its eigenvalues
+///   held to at least m / 2 (no direction's weight more than doubled: a single row or a drop has
+///   no divergence across it to recover), in both equations:
 ///
-///       R_i = m trace(P^-1 B)  (exact for a linear velocity field whatever the support),
+///       Dn_i/Dt = trace(L_i B_i)   (m div u for a linear field whatever the support),
+///       <grad p>_i = C n0 sum_j (q_i L_i + q_j L_j) W'(r_ij) e_ij,   q = p / n^2,
 ///
-///   with P's eigenvalues held to at least m / 2 (no direction's weight more than doubled: a
-///   single row or a drop has no divergence across it to recover), then limited by the summed
-///   rate S_i = trace(B) with minmod (Roe 1986, Annu. Rev. Fluid Mech. 18, 337-365):
+///   L = I everywhere else. The variational gradient and the summed rate are partners: the
+///   power of the pair forces, sum_i u_i . <grad p>_i, is C n0 sum_i q_i Dn_i/Dt, so the pressure
+///   does no work that the number densities do not store. The corrected pair keeps that identity
+///   (a unit test checks it); a corrected rate alone does not: with the force left as it was (the
+///   first form of this option, the rate limited by minmod) the flat tank's still water moved
+///   twice as much and its breathing mode grew (docs/validation.md, "The band's rate
+///   renormalised"). The pair forces stay antisymmetric (momentum is conserved), not central.
+///   Inside the water P = m I: L = I and nothing changes. Where the summed rate reads a
+///   compression the divergence does not have (the trough), the corrected rate reads none.
 ///
-///       Dn_i/Dt = minmod(S_i, R_i) = S_i or R_i, whichever is smaller in magnitude, if they
-///                                    agree in sign; 0 if they do not.
-///
-///   Inside the water P = m I and the two agree: the band alone is corrected, a few per cent of
-///   the fluid. Where the summed rate reads a compression that the divergence does not have
-///   (the trough), R is near 0 and wins. Where the renormalisation amplifies a compression that
-///   the kernel sees only on one side (a sheet or a jet landing on water, where P has lost a
-///   direction), S is smaller and wins: unlimited, R broke the Lobovsky dam break at t = 1.01 s
-///   (n > 1.2 n0 where the water that ran up the far wall falls back), limited it runs as the
-///   summed rate does. Fluid with a boundary particle within re keeps the summed rate: P there
-///   counts the wall's rows, laid on the wall's own uncompressed lattice (with them corrected
-///   the cavity of case I's short run is 0.11 cm^2 at 0.20 s instead of 0.03). The sums read
-///   u alone: under shifting_in_continuity the shift's share of the rate stays as summed.
-///
-///   The trade (docs/validation.md, "The band's rate renormalised"): a rate that is not d/dt of
-///   the summed n is no longer the partner of the variational gradient's energy, and the
-///   pressure can do work on the particles: the flat tank's still water moves about twice as
-///   much and its breathing mode grows, and the standing wave loses more. Off by default.
+///   L = I (the summed rate and the plain force) where a boundary particle is within re (P
+///   counts the wall's rows, laid on the wall's own uncompressed lattice), and where the particle
+///   is struck. The correction is for a cut kernel in water that deforms gently; where a sheet or
+///   a drop lands on water the kernel sees the impact from one side and L would double it
+///   (without the rule below the Lobovsky dam break stopped at t = 1.05 s with n > 1.2 n0 where
+///   its plunging jet falls back). Struck means any of: n rising faster than sqrt(g / DL) n0 per
+///   second over the step's prediction (the rule of the surface pressure cap,
+///   physics/SurfacePressureCap.h: neighbours closing in faster than a fall through one
+///   spacing), the summed or the corrected rate faster than that, or n already above
+///   n0 (1 + kSqueeze). A band particle under nothing but gravity is compressed by
+///   rho g d / (rho c0^2), d <= re + DL: 2-4e-4 in the cases here (c0 = 26-35 m/s). kSqueeze =
+///   3e-3 is not derived; it sits between that and what an impact leaves behind it: with 6.3e-3
+///   (sqrt(g DL) / c0) and 1e-2 the Lobovsky run at Courant 0.39 stopped at 1.11 and 1.25 s
+///   (docs/validation.md, "The band's rate renormalised"). Below c0 of about 9 m/s gravity alone
+///   would compress the band past it, and the correction would stay off. The sums read u alone:
+///   under shifting_in_continuity the shift's share of the rate stays as summed.
 
 #include <algorithm>
 #include <cmath>
@@ -67,15 +75,17 @@ inline constexpr SchemeEntry<DensityRateScheme> kDensityRateSchemes[] = {
      "d/dt of the summed n (Jandaghian & Shakibaeinia 2020, Comput. Methods Appl. Mech. Engrg. "
      "360, 112771)"},
     {"randles1996", DensityRateScheme::Randles1996,
-     "the divergence normalised by the kernel's moments (Randles & Libersky 1996, Comput. "
-     "Methods Appl. Mech. Engrg. 139, 375-408) in the surface band, limited by the summed rate "
-     "with minmod (Roe 1986)"},
+     "the kernel gradient normalised by the kernel's moments (Randles & Libersky 1996, Comput. "
+     "Methods Appl. Mech. Engrg. 139, 375-408) in the surface band, in the rate and the pressure "
+     "gradient together (Bonet & Lok 1999)"},
 };
 
 struct DensityRate_Randles1996 {
   /// The floor of P's eigenvalues, as a share of m: a particle that has lost every neighbour on
   /// one side of a line through it has 0.5 (the half kernel).
   static constexpr double kMinEigenvalue = 0.5;
+  /// n above n0 (1 + kSqueeze): a band particle compressed by more than gravity does (above).
+  static constexpr double kSqueeze = 3e-3;
 
   /// The pair sums of particle i over its neighbours within re (at r^n, u^n).
   struct Sums {
@@ -85,7 +95,21 @@ struct DensityRate_Randles1996 {
     double summed() const { return bxu + byv; }
   };
 
-  double m = 0.0;  ///< n0 / C: P_xx of a complete kernel on the lattice
+  /// L (symmetric); the identity where the particle is left alone.
+  struct Corrector {
+    double xx = 1.0, xy = 0.0, yy = 1.0;
+    bool identity() const { return xx == 1.0 && xy == 0.0 && yy == 1.0; }
+  };
+
+  /// The state of band particle i at the step: its n^n, the n the prediction's pass gave it
+  /// (the summed rate and the diffusion over dt), and dt.
+  struct Step {
+    double n_before = 0.0, n_predicted = 0.0, dt = 0.0;
+  };
+
+  double m = 0.0;            ///< n0 / C: P_xx of a complete kernel on the lattice
+  double n0 = 0.0;           ///< the lattice's number density
+  double struck_rate = 0.0;  ///< sqrt(g / DL) (1/s): n rising faster than this times n0 is struck
 
   static Sums sums(const Kernel& w, std::int64_t i, IdRange nb, const double* x, const double* y,
                    const double* u, const double* v, std::int64_t fluid_begin) {
@@ -111,8 +135,13 @@ struct DensityRate_Randles1996 {
     return s;
   }
 
-  /// R = m trace(P_c^-1 B), P_c: P with its eigenvalues held to at least kMinEigenvalue m.
-  double renormalised(const Sums& s) const {
+  /// trace(L B): the rate under the corrector L.
+  static double rate(const Sums& s, const Corrector& l) {
+    return l.xx * s.bxu + l.xy * (s.byu + s.bxv) + l.yy * s.byv;
+  }
+
+  /// m P_c^-1, P_c: P with its eigenvalues held to at least kMinEigenvalue m.
+  Corrector renormalisation(const Sums& s) const {
     const double mean = 0.5 * (s.pxx + s.pyy);
     const double rad = std::hypot(0.5 * (s.pxx - s.pyy), s.pxy);
     const double floor = kMinEigenvalue * m;
@@ -120,19 +149,49 @@ struct DensityRate_Randles1996 {
     const double th = 0.5 * std::atan2(2.0 * s.pxy, s.pxx - s.pyy);
     const double cs = std::cos(th), sn = std::sin(th);
     // P_c^-1 = v1 v1^T / l1 + v2 v2^T / l2, with v1 = (cs, sn), v2 = (-sn, cs).
-    const double ixx = cs * cs / l1 + sn * sn / l2, iyy = sn * sn / l1 + cs * cs / l2;
-    const double ixy = cs * sn * (1.0 / l1 - 1.0 / l2);
-    return m * (ixx * s.bxu + ixy * (s.byu + s.bxv) + iyy * s.byv);
+    return {m * (cs * cs / l1 + sn * sn / l2), m * cs * sn * (1.0 / l1 - 1.0 / l2),
+            m * (sn * sn / l1 + cs * cs / l2)};
   }
 
-  static double minmod(double a, double b) {
-    if (!(a * b > 0.0)) return 0.0;
-    return std::abs(a) < std::abs(b) ? a : b;
+  /// Whether a band particle is struck (above): its L is then I.
+  bool struck(const Step& st, double summed_rate, double corrected_rate) const {
+    const double limit = struck_rate * n0;
+    return st.n_predicted - st.n_before > limit * st.dt ||
+           std::max(summed_rate, corrected_rate) > limit || st.n_before > n0 * (1.0 + kSqueeze);
   }
 
-  /// The rate of a band particle: minmod(S, R), or S where a boundary particle is within re.
-  double rate(const Sums& s) const {
-    return s.boundary ? s.summed() : minmod(s.summed(), renormalised(s));
+  /// The corrector of a band particle: the renormalisation, or I near a boundary or when struck.
+  Corrector corrector(const Sums& s, const Step& st) const {
+    if (s.boundary) return {};
+    const Corrector l = renormalisation(s);
+    if (struck(st, s.summed(), rate(s, l))) return {};
+    return l;
+  }
+
+  /// What band particle j's corrector adds to the pressure gradients (unscaled: times C n0):
+  /// q_j (L_j - I) W'(r_ij) e_ij to each fluid neighbour i within re, and q_j (L_j - I)
+  /// sum_i W'(r_ji) e_ji to j itself; add(k, gx, gy) receives each. (A corrected j has no
+  /// boundary particle within re.)
+  template <class Add>
+  static void scatter_gradient(const Kernel& w, std::int64_t j, IdRange nb, const double* x,
+                               const double* y, double qj, const Corrector& l,
+                               std::int64_t fluid_begin, Add&& add) {
+    const double re2 = w.re * w.re;
+    const double axx = l.xx - 1.0, axy = l.xy, ayy = l.yy - 1.0;
+    double sx = 0.0, sy = 0.0;
+    for (const std::int32_t i : nb) {
+      if (i < fluid_begin) continue;
+      const double dx = x[i] - x[j], dy = y[i] - y[j];  // r_i - r_j
+      const double r2 = dx * dx + dy * dy;
+      if (r2 >= re2 || !(r2 > 0.0)) continue;
+      const double r = std::sqrt(r2);
+      const double f = w.derivative(r) / r;
+      const double ex = f * dx, ey = f * dy;  // W'(r_ij) e_ij
+      add(i, qj * (axx * ex + axy * ey), qj * (axy * ex + ayy * ey));
+      sx -= ex;  // W'(r_ji) e_ji
+      sy -= ey;
+    }
+    add(j, qj * (axx * sx + axy * sy), qj * (axy * sx + ayy * sy));
   }
 };
 

@@ -640,6 +640,12 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                  "corrects the rate of an evolved number density only: it needs number_density = "
                  "\"continuity\"");
     }
+    if (c.density_rate != DensityRateScheme::Summed &&
+        c.pressure_gradient != PressureGradientScheme::Suzuki2007) {
+      r.fail_key("density_rate",
+                 "corrects the rate with its partner, the variational gradient: it needs "
+                 "pressure_gradient = \"suzuki2007-variational\"");
+    }
     r.finish();
   }
   {

@@ -71,7 +71,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
                                                      scene_.lattice.n0)),
       band_rate_(spec.density_rate == DensityRateScheme::Randles1996 &&
                  spec.number_density == NumberDensityScheme::Continuity),
-      band_rate_rule_{scene_.lattice.n0 / scene_.lattice.gradient_correction},
+      band_rate_rule_{scene_.lattice.n0 / scene_.lattice.gradient_correction, scene_.lattice.n0,
+                      std::sqrt(norm(spec.gravity) / spec.dl)},
       sums_setup_{
           Kernel(spec.re()), 1.0 / scene_.lattice.concentration_sum,
           spec.shifting != ShiftingScheme::None ? ParticleShifting_Sun2017::kClumpingR : 0.0,
@@ -135,6 +136,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     in_band_.resize(ps.size());
     band_.reserve(static_cast<std::size_t>(ps.fluid_count()));
   }
+  if (band_rate_) band_corrector_.resize(ps.size());
   max_speed_ = root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     return sq(ps.now.u[i]) + sq(ps.now.v[i]);
   }));
@@ -594,7 +596,8 @@ void Simulation::compute_pressure(double dt) {
 
 void Simulation::correct_band_rate(double dt) {
   // The prediction's pass advanced n with the summed rate at (r^n, u^n); in the band, that rate
-  // is replaced by DensityRate_Randles1996's from the same pairs. Each particle writes its own n.
+  // is replaced by the corrected one from the same pairs, and the corrector kept for the
+  // pressure gradient (correct_band_gradient). Each particle writes its own n.
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
@@ -603,8 +606,31 @@ void Simulation::correct_band_rate(double dt) {
     const std::int32_t i = band_[static_cast<std::size_t>(k)];
     const auto sums = DensityRate_Randles1996::sums(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
                                                     s.y.data(), s.u.data(), s.v.data(), fluid);
-    t.n[i] += dt * (band_rate_rule_.rate(sums) - sums.summed());
+    const auto l = band_rate_rule_.corrector(sums, {s.n[i], t.n[i], dt});
+    band_corrector_[i] = l;
+    t.n[i] += dt * (DensityRate_Randles1996::rate(sums, l) - sums.summed());
   });
+}
+
+void Simulation::correct_band_gradient(double dt, const double* p_over_n2) {
+  // The partner of the band's rate: what its correctors add to the variational gradient,
+  // scattered from each band particle to its neighbours (serial: the band is a few per cent of
+  // the fluid, and the sums into a particle must not race), at the positions the gradient reads.
+  // Then the correctors are reset to I.
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const double c = -dt / density_ * ops_.gradient_correction() * ops_.n0();
+  for (const std::int32_t j : band_) {
+    DensityRate_Randles1996::Corrector& l = band_corrector_[j];
+    if (l.identity()) continue;
+    DensityRate_Randles1996::scatter_gradient(ops_.kernel(), j, neighbours_.of(j), t.x.data(),
+                                              t.y.data(), p_over_n2[j], l, ps.fluid_begin(),
+                                              [&](std::int64_t i, double gx, double gy) {
+                                                t.u[i] += c * gx;
+                                                t.v[i] += c * gy;
+                                              });
+    l = {};
+  }
 }
 
 void Simulation::cap_surface_pressure(double dt) {
@@ -697,6 +723,11 @@ void Simulation::correct(double dt) {
                                          ps.kind.data()) > 0;
     });
     if (body_) body_force_next_ = body_force(scheme, input);
+    // No band particle with a corrector has a boundary particle within re: the body's force
+    // has no part of it. (The case parser lets density_rate with the variational gradient only.)
+    if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
+      if (band_rate_) correct_band_gradient(dt, input);
+    }
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }

@@ -116,6 +116,8 @@ class Simulation {
   void cap_surface_pressure(double);  // physics/SurfacePressureCap.h (dt)
   void correct_band_rate(double);     // physics/DensityRate_Randles1996.h (dt)
   void find_surface_band();           // the surface's band and its normals
+  /// The band rate's partner in the pressure gradient (physics/DensityRate_Randles1996.h).
+  void correct_band_gradient(double dt, const double* p_over_n2);
   /// The positions the free surface is found at: r^n where the number density is evolved (the
   /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
   const ParticleState& surface_positions() const {
@@ -163,6 +165,7 @@ class Simulation {
   // continuity scheme with density_rate = "randles1996".
   bool band_rate_;
   DensityRate_Randles1996 band_rate_rule_;
+  std::vector<DensityRate_Randles1996::Corrector> band_corrector_;  // of the step, I outside it
   DensitySumsSetup sums_setup_;
   DensityInputs density_inputs_;  // of the prediction's pass (its n set at each step)
   FreeSurfaceScheme surface_scheme_;

@@ -155,6 +155,10 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "\n[physics]\nnumber_density = \"summation\"\n"
                    "density_rate = \"randles1996\"\n",
                19, "corrects the rate of an evolved number density only");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\npressure_gradient = \"koshizuka1996\"\n"
+                   "density_rate = \"randles1996\"\n",
+               19, "its partner, the variational gradient");
   expect_error(test::minimal_case_text() + "\n[physics]\npressure_gradient = \"sph\"\n", 18,
                "\"sph\" is not one of");
   expect_error(replace(test::minimal_case_text(), "end = 0.01",
