@@ -10,7 +10,7 @@
 // - DamBreak_Hydrostatic, CaseI_Hydrostatic: the defaults with gradient_renormalisation =
 //   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
-//   thread, DL 5 and 2 mm): what the band's renormalised rate costs.
+//   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid

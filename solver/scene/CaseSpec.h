@@ -208,8 +208,9 @@ struct CaseSpec {
   /// the walls (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
   GradientRenormalisation gradient_renormalisation = GradientRenormalisation::None;
   /// The evolved n's rate in the free-surface band: "summed" (d/dt of the summed n) or
-  /// "randles1996" (the divergence renormalised by the kernel's moments, limited by the summed
-  /// rate: physics/DensityRate_Randles1996.h); continuity scheme only.
+  /// "randles1996" (the kernel gradient renormalised by the kernel's moments in the rate and the
+  /// variational gradient together: physics/DensityRate_Randles1996.h); continuity scheme and
+  /// variational gradient only.
   DensityRateScheme density_rate = DensityRateScheme::Summed;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;

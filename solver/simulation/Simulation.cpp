@@ -616,12 +616,12 @@ void Simulation::correct_band_gradient(double dt, const double* p_over_n2) {
   // The partner of the band's rate: what its correctors add to the variational gradient,
   // scattered from each band particle to its neighbours (serial: the band is a few per cent of
   // the fluid, and the sums into a particle must not race), at the positions the gradient reads.
-  // Then the correctors are reset to I.
+  // correct_band_rate wrote the corrector of every particle of this step's band.
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   const double c = -dt / density_ * ops_.gradient_correction() * ops_.n0();
   for (const std::int32_t j : band_) {
-    DensityRate_Randles1996::Corrector& l = band_corrector_[j];
+    const DensityRate_Randles1996::Corrector& l = band_corrector_[j];
     if (l.identity()) continue;
     DensityRate_Randles1996::scatter_gradient(ops_.kernel(), j, neighbours_.of(j), t.x.data(),
                                               t.y.data(), p_over_n2[j], l, ps.fluid_begin(),
@@ -629,7 +629,6 @@ void Simulation::correct_band_gradient(double dt, const double* p_over_n2) {
                                                 t.u[i] += c * gx;
                                                 t.v[i] += c * gy;
                                               });
-    l = {};
   }
 }
 

@@ -161,11 +161,12 @@ class Simulation {
   GradientRenormalisation renormalisation_;
   NumberDensityScheme density_scheme_;
   NumberDensity_Jandaghian2020 continuity_;
-  // The evolved n's rate in the surface band (physics/DensityRate_Randles1996.h): on under the
-  // continuity scheme with density_rate = "randles1996".
+  // The evolved n's rate and its partner in the pressure gradient in the surface band
+  // (physics/DensityRate_Randles1996.h): on under the continuity scheme with density_rate =
+  // "randles1996"; the correctors of the step's band particles (others are never read).
   bool band_rate_;
   DensityRate_Randles1996 band_rate_rule_;
-  std::vector<DensityRate_Randles1996::Corrector> band_corrector_;  // of the step, I outside it
+  std::vector<DensityRate_Randles1996::Corrector> band_corrector_;
   DensitySumsSetup sums_setup_;
   DensityInputs density_inputs_;  // of the prediction's pass (its n set at each step)
   FreeSurfaceScheme surface_scheme_;
