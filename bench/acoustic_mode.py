@@ -31,7 +31,8 @@ ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
 H, RHO, G = 0.7, 1000.0, 9.81
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"'}
+       "free_surface": '"koshizuka1996"', "shifting": '"none"',
+       "wall_density": '"n0"'}
 # (label, sound_speed_factor, extra [physics] keys)
 VARIANTS = [
     ("defaults", 10, {}),
@@ -62,6 +63,8 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
     ("density_rate randles1996", 10, {"density_rate": '"randles1996"'}),
     ("density_rate randles1996, c0 x 2", 20, {"density_rate": '"randles1996"'}),
+    ("wall_density adami2012", 10, {"wall_density": '"adami2012"'}),
+    ("wall_density adami2012, c0 x 2", 20, {"wall_density": '"adami2012"'}),
 ]
 
 

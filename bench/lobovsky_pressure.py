@@ -73,14 +73,16 @@ EXPERIMENT = {
                       [0.10, 0.42, 1.0, 1.5, 1.544, 1.23, 0.58, 0.58])},
 }
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"'}
+       "free_surface": '"koshizuka1996"', "shifting": '"none"',
+       "wall_density": '"n0"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("surface_pressure_cap false", {"surface_pressure_cap": "false"}),
            ("gradient_renormalisation khayyer2011",
             {"gradient_renormalisation": '"khayyer2011"'}),
            ("gradient_renormalisation khayyer2011-hydrostatic",
             {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
-           ("density_rate randles1996", {"density_rate": '"randles1996"'})]
+           ("density_rate randles1996", {"density_rate": '"randles1996"'}),
+           ("wall_density adami2012", {"wall_density": '"adami2012"'})]
 
 
 def case_text(physics, dl):

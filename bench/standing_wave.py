@@ -39,7 +39,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "standing-wave" / "case.toml"
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"'}
+       "free_surface": '"koshizuka1996"', "shifting": '"none"',
+       "wall_density": '"n0"'}
 # Rows 0-3 are the table of docs/validation.md; the rest take the default scheme apart, one
 # change each ("time.KEY" goes to [time]).
 SCHEMES = [
@@ -87,6 +88,16 @@ SCHEMES = [
     ("new, density rate randles1996", {"density_rate": '"randles1996"'}),
     ("new, density rate randles1996, artificial viscosity 0",
      {"density_rate": '"randles1996"', "artificial_viscosity": "0.0"}),
+    # 33-36: the boundary particles at the density of their pressure
+    # (physics/WallDensity_Adami2012.h)
+    ("new, wall density adami2012", {"wall_density": '"adami2012"'}),
+    ("new, wall density adami2012, artificial viscosity 0",
+     {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
+    ("new, wall density adami2012, hydrostatic gradient renormalised",
+     {"wall_density": '"adami2012"', "gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+    ("new, wall density adami2012, hydrostatic gradient renormalised, artificial viscosity 0",
+     {"wall_density": '"adami2012"', "gradient_renormalisation": '"khayyer2011-hydrostatic"',
+      "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -19,6 +19,13 @@ struct EquationOfState_TaitShakibaeiniaJin2010 {
 
   double pressure(double n) const { return rho0 * c0 * c0 / gamma * (power(n / n0, gamma) - 1.0); }
 
+  /// The inverse: n = n0 (1 + gamma p / (rho0 c0^2))^(1/gamma); 0 for a tension the state
+  /// cannot reach (the bracket <= 0).
+  double number_density(double p) const {
+    const double b = 1.0 + gamma * p / (rho0 * c0 * c0);
+    return b > 0.0 ? n0 * std::pow(b, 1.0 / gamma) : 0.0;
+  }
+
   /// x^e; for whole e from 1 to 16 (the study's 7) by squaring: std::pow was 2 to 3 % of a
   /// step in the profile (docs/performance.md).
   static double power(double x, double e) {

@@ -617,6 +617,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     };
     c.negative_pressure = pick(kNegativePressureSchemes, "negative_pressure", c.negative_pressure);
     c.pressure_floor = r.number("pressure_floor", c.pressure_floor, -kInf, 0.0);
+    c.wall_density = pick(kWallDensitySchemes, "wall_density", c.wall_density);
     c.number_density = pick(kNumberDensitySchemes, "number_density", c.number_density);
     c.density_diffusion = r.number("density_diffusion", c.density_diffusion, 0.0, 1.0);
     c.density_diffusion_scheme =

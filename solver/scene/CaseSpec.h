@@ -22,6 +22,7 @@
 #include "physics/PressureGradient.h"
 #include "physics/TimeStep.h"
 #include "physics/WallCollision.h"
+#include "physics/WallDensity_Adami2012.h"
 #include "physics/WallPressure.h"
 
 namespace wcmps {
@@ -213,6 +214,11 @@ struct CaseSpec {
   /// variational gradient only.
   DensityRateScheme density_rate = DensityRateScheme::Summed;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
+  /// The boundary particles' n in the variational gradient: n0, or that of their pressure under
+  /// the equation of state ("adami2012": physics/WallDensity_Adami2012.h; still water twice as
+  /// still, but the Lobovsky dam break does not run through; docs/validation.md, "The wall's
+  /// density").
+  WallDensityScheme wall_density = WallDensityScheme::ReferenceN0;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide
   double collision_restitution = 0.2;  ///< e of a fluid particle striking a boundary
@@ -298,6 +304,7 @@ inline void use_scheme_3a85288(CaseSpec& c) {
   c.free_surface = FreeSurfaceScheme::Koshizuka1996;
   c.shifting = ShiftingScheme::None;
   c.wall_clearance = 0.5;
+  c.wall_density = WallDensityScheme::ReferenceN0;
 }
 
 }  // namespace wcmps

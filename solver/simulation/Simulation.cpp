@@ -62,6 +62,9 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       artificial_viscosity_{spec.artificial_viscosity, scene_.sound_speed},
       gradient_scheme_(spec.pressure_gradient),
       wall_scheme_(spec.wall_pressure),
+      wall_density_(spec.wall_density == WallDensityScheme::Adami2012
+                        ? std::optional<WallDensity_Adami2012>(WallDensity_Adami2012{eos_})
+                        : std::nullopt),
       pressure_bound_(PressureBound::make(spec.negative_pressure, spec.pressure_floor)),
       tensile_switch_(spec.negative_pressure == NegativePressure::Sun2018Switch),
       renormalisation_(spec.gradient_renormalisation),
@@ -204,14 +207,19 @@ const double* Simulation::gradient_input() {
   ParticleSet& ps = scene_.particles;
   const ParticleState& t = ps.next;
   if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
+    // Boundary particles: at the density of their pressure (physics/WallDensity_Adami2012.h)
+    // or at n0; a ghost's is its wall particle's, whose pressure it copies.
     const double inv_n0_2 = 1.0 / (ops_.n0() * ops_.n0());
+    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+      p_over_n2_[w] = wall_density_ ? wall_density_->gradient_input(t.p[w]) : t.p[w] * inv_n0_2;
+    });
+    parallel_for(ps.wall_end(), ps.fluid_begin(),
+                 [&](std::int64_t g) { p_over_n2_[g] = p_over_n2_[ps.ghost_source(g)]; });
     // A particle alone (n = 0) is on the free surface, p = 0: its p / n^2 is 0, not 0/0. The
     // pair loops multiply every input, also of pairs beyond re, by the kernel's zero, so each
     // must be finite.
-    parallel_for(0, ps.size(), [&](std::int64_t i) {
-      p_over_n2_[i] = i < ps.fluid_begin() ? t.p[i] * inv_n0_2
-                      : t.n[i] > 0.0       ? t.p[i] / (t.n[i] * t.n[i])
-                                           : 0.0;
+    parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
+      p_over_n2_[i] = t.n[i] > 0.0 ? t.p[i] / (t.n[i] * t.n[i]) : 0.0;
     });
     return p_over_n2_.data();
   } else {

@@ -26,6 +26,7 @@
 #include "physics/TimeStep.h"
 #include "physics/Viscosity.h"
 #include "physics/WallCollision.h"
+#include "physics/WallDensity_Adami2012.h"
 #include "physics/WallPressure.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
@@ -156,6 +157,7 @@ class Simulation {
   ArtificialViscosity_Monaghan1992 artificial_viscosity_;
   PressureGradientScheme gradient_scheme_;
   WallPressureScheme wall_scheme_;
+  std::optional<WallDensity_Adami2012> wall_density_;  // unset: boundary particles at n0
   PressureBound pressure_bound_;
   bool tensile_switch_;
   GradientRenormalisation renormalisation_;

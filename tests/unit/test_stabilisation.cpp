@@ -1,7 +1,8 @@
 // The cures of the stabilised scheme, each on a particle arrangement whose answer is known: the
 // density sums and the continuity update, the density diffusion with and without its
 // hydrostatic correction, the free-surface scan, the shifting and its surface projection, the
-// tensile-instability switch, the renormalised pressure gradient and the pressure bound.
+// tensile-instability switch, the renormalised pressure gradient, the pressure bound and the
+// wall's density.
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,7 @@
 #include "physics/PredictionSums.h"
 #include "physics/PressureGradient.h"
 #include "physics/SurfacePressureCap.h"
+#include "physics/WallDensity_Adami2012.h"
 
 namespace wcmps {
 namespace {
@@ -795,6 +797,46 @@ TEST(SurfacePressureCap, AStruckParticleIsLeftAlone) {
   EXPECT_TRUE(cap.struck(n0, n0 * (1.0 + 200.0 * dt), n0, dt));
   EXPECT_FALSE(cap.struck(n0, n0 * (1.0 - 200.0 * dt), n0, dt));
   EXPECT_FALSE(cap.struck(n0, n0, n0, 0.0));  // the start (dt = 0): the cap applies
+}
+
+TEST(WallDensity, TheInverseOfTheEquationOfStateGivesBackThePressure) {
+  const EquationOfState_TaitShakibaeiniaJin2010 eos{1000.0, 24.0, 7.0, lattice().n0};
+  for (const double p : {-50e3, -300.0, 0.0, 2943.0, 1e5}) {
+    EXPECT_NEAR(eos.pressure(eos.number_density(p)), p, 1e-9 * 1e5) << p;
+  }
+  const WallDensity_Adami2012 wall{eos};
+  EXPECT_EQ(wall.gradient_input(0.0), 0.0);  // a dry wall
+  // A tension the state cannot reach (the bracket 1 + gamma p / (rho c0^2) <= 0): no pull.
+  EXPECT_EQ(wall.gradient_input(-1000.0 * 24.0 * 24.0 / 7.0 - 1.0), 0.0);
+}
+
+TEST(WallDensity, AWallAtTheWatersPressurePushesItNoHarderThanTheWaterItself) {
+  // Rows 0 to 6 of a block are wall, rows 7 on water, all on one lattice and at one pressure
+  // (the water compressed to it: n = EOS^-1(p), as the evolved n carries it). Particle (7, 7) of
+  // the first water row has a full, symmetric neighbourhood: a uniform q gives it no gradient,
+  // and any force is the wall's q differing from the water's.
+  const int nx = 15;
+  const Cloud c = block(nx, 15);
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  const EquationOfState_TaitShakibaeiniaJin2010 eos{1000.0, 24.0, 7.0, lc.n0};
+  const double p = 2943.0;  // 0.3 m of water
+  const double n = eos.number_density(p);
+  const auto gradient_at_wall_q = [&](double wall_q) {
+    std::vector<double> q(c.x.size(), p / (n * n));
+    for (std::int64_t k = 0; k < at(0, 7, nx); ++k) q[k] = wall_q;
+    const auto i = at(7, 7, nx);
+    return PressureGradient_Suzuki2007<true>{}.gradient(ops, i, c.list.of(i), c.x.data(),
+                                                        c.y.data(), q.data());
+  };
+  const Vec2 adami = gradient_at_wall_q(WallDensity_Adami2012{eos}.gradient_input(p));
+  const Vec2 at_n0 = gradient_at_wall_q(p / (lc.n0 * lc.n0));
+  // At n0 the wall pushes the water up: -grad p / rho > 0, about 0.4 (n^2/n0^2 - 1) p / DL (1.1
+  // m/s^2 here, a ninth of g; the bound is half of that). Round-off of sums of p/DL-sized
+  // terms: 1e-12.
+  EXPECT_LT(at_n0.y, -0.002 * p / kDl);
+  EXPECT_NEAR(adami.x, 0.0, 1e-12 * p / kDl);
+  EXPECT_NEAR(adami.y, 0.0, 1e-12 * p / kDl);
 }
 
 }  // namespace
