@@ -24,6 +24,7 @@ void ParticleState::swap(ParticleState& o) noexcept {
   v.swap(o.v);
   shift_u.swap(o.shift_u);
   shift_v.swap(o.shift_v);
+  struck_n.swap(o.struck_n);
   p.swap(o.p);
   n.swap(o.n);
   surface.swap(o.surface);
@@ -34,6 +35,10 @@ void ParticleSet::track_shift() {
     s->shift_u.assign(kind.size(), 0.0);
     s->shift_v.assign(kind.size(), 0.0);
   }
+}
+
+void ParticleSet::track_strikes() {
+  for (ParticleState* s : {&now, &next}) s->struck_n.assign(kind.size(), 0.0);
 }
 
 ParticleSet::ParticleSet(const std::vector<ParticleSeed>& walls,
@@ -100,6 +105,10 @@ void ParticleSet::reorder_fluid(const std::vector<std::int32_t>& order) {
       next.shift_u[b + k] = now.shift_u[order[k]];
       next.shift_v[b + k] = now.shift_v[order[k]];
     });
+  }
+  if (!now.struck_n.empty()) {
+    parallel_for(0, size() - b,
+                 [&](std::int64_t k) { next.struck_n[b + k] = now.struck_n[order[k]]; });
   }
   now.swap(next);
   std::copy(id_scratch_.begin() + b, id_scratch_.end(), id.begin() + b);

@@ -28,6 +28,10 @@ struct ParticleState {
   /// carry, which the evolved number density follows with [physics] shifting_in_continuity.
   /// Empty unless ParticleSet::track_shift() was called; resize() leaves them alone.
   std::vector<double> shift_u, shift_v;
+  /// The surface pressure cap's memory of a strike (physics/SurfacePressureCap.h): the n where the
+  /// strike found the particle, 0 when it is not struck. Empty unless
+  /// ParticleSet::track_strikes() was called; resize() leaves it alone.
+  std::vector<double> struck_n;
   std::vector<double> p;              ///< pressure (Pa)
   std::vector<double> n;              ///< number density at the predicted positions (-)
   std::vector<std::uint8_t> surface;  ///< 1 for free-surface particles
@@ -66,6 +70,8 @@ class ParticleSet {
   void reorder_fluid(const std::vector<std::int32_t>& order);
   /// Gives both states the shift's velocities (ParticleState::shift_u), zero.
   void track_shift();
+  /// Gives both states the memory of strikes (ParticleState::struck_n), none.
+  void track_strikes();
 
   ParticleState now;   ///< the state at the current time
   ParticleState next;  ///< scratch for the step in progress

@@ -45,6 +45,16 @@
 /// the threshold's 44 n0 per second (0.22 m/s); the Lobovsky surge strikes the wall at up to
 /// 2 sqrt(g H) = 3.4 m/s. Without gravity the threshold is 0: only a particle whose n does not
 /// rise is capped. Measured in docs/validation.md ("A surface particle that pushes itself off").
+///
+/// **Until the strike is undone** (from 2026-12-04). A strike packs the particle against what it
+/// struck, and its n stays high after it stops rising fast; capped then, it kept the water's
+/// pressure while its n went on climbing, and nothing pushed it out (the Lobovsky surge's tip in
+/// the struck corner at 1.10 to 1.2 n0 with 0 to 7,900 Pa, where its own pressure would be
+/// 450 kPa: the run stopped at n*/n0 > 1.2). So a struck particle stays struck until its n is
+/// back at or below the n where the strike found it, whatever its rate by then: the memory is a
+/// field of the particle (ParticleState::struck_n), carried through reorders and checkpoints.
+/// The rule has no constant of its own; where nothing is struck (still water, a draining trough,
+/// a wave) nothing changes.
 
 #include <cmath>
 #include <cstdint>
@@ -64,6 +74,15 @@ struct SurfacePressureCap {
   /// pressure is the impact's and is not capped.
   bool struck(double n_before, double n_after, double n0, double dt) const {
     return n_after - n_before > struck_rate * n0 * dt;
+  }
+
+  /// The memory of a strike, carried from step to step: the n where the strike found the
+  /// particle, or 0 when it is not struck. A particle is struck from the step its n rises fast
+  /// (struck) until its n is back at or below where that strike found it; the cap leaves it
+  /// alone for all that time (the particle's pressure is then its own).
+  double strike(double struck_from, double n_before, double n_after, double n0, double dt) const {
+    if (struck(n_before, n_after, n0, dt)) return struck_from > 0.0 ? struck_from : n_before;
+    return struck_from > 0.0 && n_after > struck_from ? struck_from : 0.0;
   }
 
   /// The cap of surface particle s: the kernel-weighted mean pressure of the neighbours j for

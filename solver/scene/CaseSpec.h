@@ -216,8 +216,7 @@ struct CaseSpec {
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
   /// The boundary particles' n in the variational gradient: n0, or that of their pressure under
   /// the equation of state ("adami2012": physics/WallDensity_Adami2012.h; still water twice as
-  /// still, but the Lobovsky dam break does not run through; docs/validation.md, "The wall's
-  /// density").
+  /// still, a standing wave damped more; docs/validation.md, "The wall's density").
   WallDensityScheme wall_density = WallDensityScheme::ReferenceN0;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide

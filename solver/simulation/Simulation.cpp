@@ -131,6 +131,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     grad_y_.resize(ps.size());
   }
   if (shift_in_continuity_) ps.track_shift();
+  if (surface_cap_) ps.track_strikes();
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
   if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_ ||
       renormalisation_ != GradientRenormalisation::None || band_rate_) {
@@ -343,6 +344,7 @@ void Simulation::save(StateWriter& out) const {
   out.field("position", {s.x.data(), s.y.data()}, n);
   out.field("velocity", {s.u.data(), s.v.data()}, n);
   if (shift_in_continuity_) out.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
+  if (surface_cap_) out.field("struck_number_density", {s.struck_n.data()}, n);
   out.field("pressure", {s.p.data()}, n);
   out.field("number_density", {s.n.data()}, n);
   out.field("free_surface", s.surface.data(), n);
@@ -377,6 +379,12 @@ void Simulation::load(StateReader& in) {
   } else if (shift_in_continuity_) {
     std::fill(s.shift_u.begin(), s.shift_u.end(), 0.0);
     std::fill(s.shift_v.begin(), s.shift_v.end(), 0.0);
+  }
+  // Likewise the surface pressure cap's memory of strikes (a checkpoint before 2026-12-04: none).
+  if (surface_cap_ && in.has("struck_number_density")) {
+    in.field("struck_number_density", {s.struck_n.data()}, n);
+  } else if (surface_cap_) {
+    std::fill(s.struck_n.begin(), s.struck_n.end(), 0.0);
   }
   in.field("pressure", {s.p.data()}, n);
   in.field("number_density", {s.n.data()}, n);
@@ -643,7 +651,8 @@ void Simulation::correct_band_gradient(double dt, const double* p_over_n2) {
 void Simulation::cap_surface_pressure(double dt) {
   // physics/SurfacePressureCap.h: two passes, so that every cap reads the pressures of this
   // step's equation of state and no particle's cap depends on the order of the others. A struck
-  // particle (its n rising fast) keeps its own pressure.
+  // particle (its n rose fast, and is not yet back where the strike found it) keeps its own
+  // pressure; every fluid particle carries its memory of a strike to the next step.
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
@@ -652,8 +661,9 @@ void Simulation::cap_surface_pressure(double dt) {
   cap_.resize(ps.size());
   const auto interior = [&](std::int32_t j) { return j >= fluid && !t.surface[j]; };
   parallel_for(fluid, ps.size(), [&](std::int64_t i) {
+    t.struck_n[i] = cap_rule_.strike(s.struck_n[i], s.n[i], t.n[i], n0, dt);
     if (!t.surface[i]) return;
-    if (cap_rule_.struck(s.n[i], t.n[i], n0, dt)) {
+    if (t.struck_n[i] > 0.0) {
       cap_[i] = t.p[i];
       return;
     }

@@ -799,6 +799,26 @@ TEST(SurfacePressureCap, AStruckParticleIsLeftAlone) {
   EXPECT_FALSE(cap.struck(n0, n0, n0, 0.0));  // the start (dt = 0): the cap applies
 }
 
+TEST(SurfacePressureCap, AStruckParticleStaysStruckUntilItsNIsBack) {
+  // The Lobovsky surge's tip in the corner: struck (n from 1.00 to 1.04 n0 in one step), then
+  // packed further at a rate under the threshold, then relaxing. It stays struck, remembering
+  // the n where the strike found it, until its n is back there; then it is capped again.
+  const SurfacePressureCap cap = SurfacePressureCap::make(9.81, 0.005);
+  const double n0 = 3.04, dt = 5e-5;
+  double memory = cap.strike(0.0, n0, n0, n0, dt);
+  EXPECT_EQ(memory, 0.0);  // nothing struck: nothing remembered
+  memory = cap.strike(memory, 1.00 * n0, 1.04 * n0, n0, dt);
+  EXPECT_EQ(memory, 1.00 * n0);
+  memory = cap.strike(memory, 1.04 * n0, 1.0401 * n0, n0, dt);  // 2 n0 per second: slow
+  EXPECT_EQ(memory, 1.00 * n0);
+  memory = cap.strike(memory, 1.0401 * n0, 1.10 * n0, n0, dt);  // struck again: the first n kept
+  EXPECT_EQ(memory, 1.00 * n0);
+  memory = cap.strike(memory, 1.10 * n0, 1.001 * n0, n0, dt);  // relaxing, not yet back
+  EXPECT_EQ(memory, 1.00 * n0);
+  memory = cap.strike(memory, 1.001 * n0, 0.9999 * n0, n0, dt);  // back: capped again
+  EXPECT_EQ(memory, 0.0);
+}
+
 TEST(WallDensity, TheInverseOfTheEquationOfStateGivesBackThePressure) {
   const EquationOfState_TaitShakibaeiniaJin2010 eos{1000.0, 24.0, 7.0, lattice().n0};
   for (const double p : {-50e3, -300.0, 0.0, 2943.0, 1e5}) {
