@@ -133,6 +133,7 @@ std::string state_bytes(const Simulation& sim) {
   add(s.n);
   add(s.shift_u);
   add(s.shift_v);
+  add(s.struck_n);
   add(s.surface);
   add(sim.particles().id);
   const double t = sim.time();
