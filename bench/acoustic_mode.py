@@ -65,6 +65,12 @@ VARIANTS = [
     ("density_rate randles1996, c0 x 2", 20, {"density_rate": '"randles1996"'}),
     ("wall_density adami2012", 10, {"wall_density": '"adami2012"'}),
     ("wall_density adami2012, c0 x 2", 20, {"wall_density": '"adami2012"'}),
+    ("wall_density adami2012, artificial_viscosity 0", 10,
+     {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
+    ("wall_density adami2012, artificial_viscosity 0, c0 x 2", 20,
+     {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
+    ("wall_density n0 (the default until 2026-12-04)", 10, {"wall_density": '"n0"'}),
+    ("wall_density n0, c0 x 2", 20, {"wall_density": '"n0"'}),
 ]
 
 

@@ -82,7 +82,10 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("gradient_renormalisation khayyer2011-hydrostatic",
             {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
            ("density_rate randles1996", {"density_rate": '"randles1996"'}),
-           ("wall_density adami2012", {"wall_density": '"adami2012"'})]
+           ("wall_density adami2012", {"wall_density": '"adami2012"'}),
+           ("wall_density adami2012, artificial_viscosity 0",
+            {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
+           ("wall_density n0 (the default until 2026-12-04)", {"wall_density": '"n0"'})]
 
 
 def case_text(physics, dl):

@@ -98,6 +98,11 @@ SCHEMES = [
     ("new, wall density adami2012, hydrostatic gradient renormalised, artificial viscosity 0",
      {"wall_density": '"adami2012"', "gradient_renormalisation": '"khayyer2011-hydrostatic"',
       "artificial_viscosity": "0.0"}),
+    # 37-38: the boundary particles at n0 (the default until 2026-12-04; rows 33-34 are the
+    # defaults since then)
+    ("new, wall density n0", {"wall_density": '"n0"'}),
+    ("new, wall density n0, artificial viscosity 0",
+     {"wall_density": '"n0"', "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -28,10 +28,11 @@
 /// pulls). Ghost particles copy their wall particle's pressure and so its q. Only the
 /// variational gradient reads q; the other gradients read p.
 ///
-/// "n0" (the default, and 3a85288's scheme) keeps every boundary particle at n0. "adami2012"
-/// makes still water twice as still and stops the still tank's breathing mode from growing, but
-/// a standing wave loses more per period with it (without artificial viscosity 8.5 against 6.0 %),
-/// so it is not the default yet. Measured in docs/validation.md, "The wall's density".
+/// "adami2012" is the default (from 2026-12-04): still water twice as still, the still tank's
+/// breathing mode dies out instead of growing, the Lobovsky impact is the same; a standing wave
+/// at DL 10 mm loses a little more per period (12.8 against 12.2 %; at DL 5 mm the difference is
+/// within the measure's spread). "n0" (3a85288's scheme) keeps every boundary
+/// particle at n0. Measured in docs/validation.md, "The wall's density".
 
 #include <cmath>
 

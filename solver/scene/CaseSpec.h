@@ -214,10 +214,11 @@ struct CaseSpec {
   /// variational gradient only.
   DensityRateScheme density_rate = DensityRateScheme::Summed;
   WallPressureScheme wall_pressure = WallPressureScheme::FluidExtrapolated;
-  /// The boundary particles' n in the variational gradient: n0, or that of their pressure under
-  /// the equation of state ("adami2012": physics/WallDensity_Adami2012.h; still water twice as
-  /// still, a standing wave damped more; docs/validation.md, "The wall's density").
-  WallDensityScheme wall_density = WallDensityScheme::ReferenceN0;
+  /// The boundary particles' n in the variational gradient: that of their pressure under the
+  /// equation of state ("adami2012": physics/WallDensity_Adami2012.h; still water twice as
+  /// still, the still tank's breathing mode damped; docs/validation.md, "The wall's density"),
+  /// or n0 (3a85288's).
+  WallDensityScheme wall_density = WallDensityScheme::Adami2012;
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide
   double collision_restitution = 0.2;  ///< e of a fluid particle striking a boundary

@@ -58,7 +58,7 @@ TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_EQ(c.step_mode, TimeStepMode::Courant);
   EXPECT_EQ(c.pressure_gradient, PressureGradientScheme::Suzuki2007);
   EXPECT_EQ(c.wall_pressure, WallPressureScheme::FluidExtrapolated);
-  EXPECT_EQ(c.wall_density, WallDensityScheme::ReferenceN0);
+  EXPECT_EQ(c.wall_density, WallDensityScheme::Adami2012);
   EXPECT_EQ(c.output_fields.size(), std::size(kFields));
   EXPECT_EQ(c.output_kinds.size(), 3u);
   ASSERT_EQ(c.walls.size(), 1u);

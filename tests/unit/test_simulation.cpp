@@ -329,14 +329,19 @@ TEST(Stability, AParticleThroughAWallIsReported) {
   }
 }
 
-/// A lone particle thrown at the bottom at 2 m/s, with nothing else acting on it: no gravity,
-/// no viscosity, and zero pressure (it is on the free surface, and walls extrapolate zero from
-/// it). Only the wall collision model can stop it. Zero pressure needs the summed number
-/// density: an evolved one rises as the particle closes on the wall, and that pressure alone
-/// turns it back (with the default schemes it leaves at 2.02 m/s, having never collided).
+/// A lone particle thrown at the bottom at 2 m/s, with next to nothing else acting on it: no
+/// gravity, no viscosity, no shifting, and zero pressure on the free surface (walls extrapolate
+/// zero from it). In the steps where the wall's rows make it an interior particle its pressure
+/// and the walls' are equal, and so are their n under "adami2012": no force (n0 walls slow it
+/// by a few per cent). Only the wall collision model can stop it. Zero pressure needs the summed
+/// number density: an evolved one rises as the particle closes on the wall, and that pressure
+/// alone turns it back (with the default schemes it leaves at 2.02 m/s, having never collided).
+/// The shifting is off because in those interior steps its concentration gradient pushes the
+/// particle back out of the wall's rows, and holds it there, at 2 m/s into the wall.
 CaseSpec lone_particle_at_the_bottom() {
   CaseSpec spec = minimal();
   spec.number_density = NumberDensityScheme::Summation;
+  spec.shifting = ShiftingScheme::None;
   spec.gravity = {0.0, 0.0};
   spec.sound_speed = 20.0;
   spec.kinematic_viscosity = 0.0;
