@@ -71,6 +71,8 @@ VARIANTS = [
      {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
     ("wall_density n0 (the default until 2026-12-04)", 10, {"wall_density": '"n0"'}),
     ("wall_density n0, c0 x 2", 20, {"wall_density": '"n0"'}),
+    ("density_rate summed (the default until 2026-12-04, later)", 10,
+     {"density_rate": '"summed"'}),
 ]
 
 

@@ -103,6 +103,11 @@ SCHEMES = [
     ("new, wall density n0", {"wall_density": '"n0"'}),
     ("new, wall density n0, artificial viscosity 0",
      {"wall_density": '"n0"', "artificial_viscosity": "0.0"}),
+    # 39-40: the band's rate summed (the default until later on 2026-12-04; rows 31-32 are the
+    # defaults since then)
+    ("new, density rate summed", {"density_rate": '"summed"'}),
+    ("new, density rate summed, artificial viscosity 0",
+     {"density_rate": '"summed"', "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

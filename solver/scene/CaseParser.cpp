@@ -634,7 +634,12 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                  "renormalises the variational gradient only: it needs pressure_gradient = "
                  "\"suzuki2007-variational\"");
     }
-    c.density_rate = pick(kDensityRateSchemes, "density_rate", c.density_rate);
+    // Its default applies where it can: with the summed n or another gradient it is "summed",
+    // and only an explicit "randles1996" there is an error.
+    const bool rate_applies = c.number_density == NumberDensityScheme::Continuity &&
+                              c.pressure_gradient == PressureGradientScheme::Suzuki2007;
+    c.density_rate = pick(kDensityRateSchemes, "density_rate",
+                          rate_applies ? c.density_rate : DensityRateScheme::Summed);
     if (c.density_rate != DensityRateScheme::Summed &&
         c.number_density != NumberDensityScheme::Continuity) {
       r.fail_key("density_rate",

@@ -73,7 +73,8 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
                                                      scene_.sound_speed, scene_.lattice.lambda,
                                                      scene_.lattice.n0)),
       band_rate_(spec.density_rate == DensityRateScheme::Randles1996 &&
-                 spec.number_density == NumberDensityScheme::Continuity),
+                 spec.number_density == NumberDensityScheme::Continuity &&
+                 spec.pressure_gradient == PressureGradientScheme::Suzuki2007),
       band_rate_rule_{scene_.lattice.n0 / scene_.lattice.gradient_correction, scene_.lattice.n0,
                       std::sqrt(norm(spec.gravity) / spec.dl)},
       sums_setup_{

@@ -59,12 +59,27 @@ TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_EQ(c.pressure_gradient, PressureGradientScheme::Suzuki2007);
   EXPECT_EQ(c.wall_pressure, WallPressureScheme::FluidExtrapolated);
   EXPECT_EQ(c.wall_density, WallDensityScheme::Adami2012);
+  EXPECT_EQ(c.density_rate, DensityRateScheme::Randles1996);
   EXPECT_EQ(c.output_fields.size(), std::size(kFields));
   EXPECT_EQ(c.output_kinds.size(), 3u);
   ASSERT_EQ(c.walls.size(), 1u);
   EXPECT_TRUE(c.walls[0].solid_on_right);
   ASSERT_EQ(c.fluids.size(), 1u);
   EXPECT_EQ(c.fluids[0].polygon.size(), 4u);
+}
+
+TEST(CaseParser, TheBandRateDefaultsToSummedWhereItCannotApply) {
+  // "randles1996" corrects the evolved n's rate with the variational gradient as its partner:
+  // the summed n, or another gradient, gets "summed" by default instead of an error, which an
+  // explicit "randles1996" still gets (CaseParser.InconsistentValuesAreNamed).
+  const auto rate = [](const std::string& physics) {
+    return parse_case_text(test::minimal_case_text() + "\n[physics]\n" + physics, "mini.toml")
+        .density_rate;
+  };
+  EXPECT_EQ(rate("number_density = \"summation\"\n"), DensityRateScheme::Summed);
+  EXPECT_EQ(rate("pressure_gradient = \"koshizuka1998-min\"\n"), DensityRateScheme::Summed);
+  EXPECT_EQ(rate("number_density = \"continuity\"\n"), DensityRateScheme::Randles1996);
+  EXPECT_EQ(rate("density_rate = \"summed\"\n"), DensityRateScheme::Summed);
 }
 
 TEST(CaseParser, EveryShippedCaseIsValid) {
