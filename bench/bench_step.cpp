@@ -1,8 +1,9 @@
 // Google Benchmark of the time step: wall time per step and particle-steps per second against
 // particle count and threads (docs/performance.md, "Scaling").
 //
-// - DamBreak/DL_um/threads: cases/dambreak at DL (um), from the collapse's first steps (a
-//   flow with every phase busy); DL 2 mm gives about 20,000 particles.
+// - DamBreak/DL_um/threads: cases/dambreak at DL (um), from the collapse's first steps (the
+//   column still nearly at rest: the free surface's phases have little to do there, see
+//   DamBreakSurge); DL 2 mm gives about 20,000 particles.
 // - CaseI/DL_um/threads: the study's case I (cases/caseI) from t = 0 without settling, the
 //   block moving, from DL 7 mm (27,000 particles) to the fine 2 mm case (316,000).
 // - DamBreakSurge/DL_um/threads: the same dam break stepped to t = 0.25 s before timing (DL 10
