@@ -63,6 +63,7 @@
 #include <cstdint>
 
 #include "core/SchemeTable.h"
+#include "core/Vec2.h"
 #include "neighbours/NeighbourList.h"
 #include "operators/Kernel.h"
 
@@ -168,30 +169,80 @@ struct DensityRate_Randles1996 {
     return l;
   }
 
-  /// What band particle j's corrector adds to the pressure gradients (unscaled: times C n0):
-  /// q_j (L_j - I) W'(r_ij) e_ij to each fluid neighbour i within re, and q_j (L_j - I)
-  /// sum_i W'(r_ji) e_ji to j itself; add(k, gx, gy) receives each. (A corrected j has no
-  /// boundary particle within re.)
-  template <class Add>
-  static void scatter_gradient(const Kernel& w, std::int64_t j, IdRange nb, const double* x,
-                               const double* y, double qj, const Corrector& l,
-                               std::int64_t fluid_begin, Add&& add) {
-    const double re2 = w.re * w.re;
-    const double axx = l.xx - 1.0, axy = l.xy, ayy = l.yy - 1.0;
-    double sx = 0.0, sy = 0.0;
-    for (const std::int32_t i : nb) {
-      if (i < fluid_begin) continue;
-      const double dx = x[i] - x[j], dy = y[i] - y[j];  // r_i - r_j
-      const double r2 = dx * dx + dy * dy;
-      if (r2 >= re2 || !(r2 > 0.0)) continue;
-      const double r = std::sqrt(r2);
-      const double f = w.derivative(r) / r;
-      const double ex = f * dx, ey = f * dy;  // W'(r_ij) e_ij
-      add(i, qj * (axx * ex + axy * ey), qj * (axy * ex + ayy * ey));
-      sx -= ex;  // W'(r_ji) e_ji
-      sy -= ey;
+  /// The variational gradient of fluid particle i with the band's correctors, gathered by i
+  /// (unscaled: times C n0), in one pass over its list:
+  ///
+  ///     sum_j ((t_i + q_j) I + A_j + [j fluid] A_i) W'(r_ij) e_ij,   A = q (L - I),
+  ///
+  /// that is sum_j (q_i L_i + q_j L_j) W'(r_ij) e_ij, with t_i the own term of
+  /// MpsOperators::gradient_variational (q_i, or |q_i| under the tensile switch where L_i = I).
+  /// The arrays a (A's xx, xy, yy) are zero where L = I and on boundary particles, so that the
+  /// pairs with boundary particles keep the plain form: a corrected particle has none within
+  /// re at r^n, where its L was summed, and one that comes within re by r* is read plain, as the
+  /// body's force reads it (Simulation::body_force). Gathered, each particle sums only into
+  /// itself: the pass runs in parallel and its result does not depend on the thread count.
+  ///
+  /// Only a band particle has an A: a particle with none in its list (the water deeper than
+  /// re + skin below the band) has nothing to gather, and reaches() sends it to the plain
+  /// gradient, which costs two thirds as much per pair (no loads of A).
+  struct Excess {
+    const double* xx = nullptr;
+    const double* xy = nullptr;
+    const double* yy = nullptr;
+    std::int64_t fluid_begin = 0;
+    const std::uint8_t* band = nullptr;  ///< 1: a particle of this step's band (its A set)
+    /// Whether particle i or one in its list nb is in the band.
+    bool reaches(std::int64_t i, IdRange nb) const {
+      if (!xx) return false;
+      if (band[i]) return true;
+      for (const std::int32_t j : nb) {
+        if (band[j]) return true;
+      }
+      return false;
     }
-    add(j, qj * (axx * sx + axy * sy), qj * (axy * sx + ayy * sy));
+  };
+  static Vec2 gathered_gradient(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
+                                const double* y, const double* q, double ti, const Excess& a) {
+    const double xi = x[i], yi = y[i];
+    const double ixx = a.xx[i], ixy = a.xy[i], iyy = a.yy[i];
+    const std::int32_t* id = nb.first;
+    double gx = 0.0, gy = 0.0;
+#pragma omp simd reduction(+ : gx, gy)
+    for (std::int64_t k = 0; k < nb.size(); ++k) {
+      const std::int32_t j = id[k];
+      const double dx = xi - x[j], dy = yi - y[j];
+      const double r = std::sqrt(dx * dx + dy * dy);
+      const double f = w.derivative(r) / r;
+      const double s = ti + q[j];
+      const double m = j >= a.fluid_begin ? 1.0 : 0.0;
+      const double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
+      gx += f * (s * dx + axx * dx + axy * dy);
+      gy += f * (s * dy + axy * dx + ayy * dy);
+    }
+    return {gx, gy};
+  }
+
+  /// What gathered_gradient adds to the plain gradient of i (unscaled): sum_j (A_j + [j fluid]
+  /// A_i) W'(r_ij) e_ij, for the particles whose plain part another form computes (the
+  /// renormalised gradients, PressureGradient.h).
+  static Vec2 gathered_excess(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
+                              const double* y, const Excess& a) {
+    const double xi = x[i], yi = y[i];
+    const double ixx = a.xx[i], ixy = a.xy[i], iyy = a.yy[i];
+    const std::int32_t* id = nb.first;
+    double gx = 0.0, gy = 0.0;
+#pragma omp simd reduction(+ : gx, gy)
+    for (std::int64_t k = 0; k < nb.size(); ++k) {
+      const std::int32_t j = id[k];
+      const double dx = xi - x[j], dy = yi - y[j];
+      const double r = std::sqrt(dx * dx + dy * dy);
+      const double f = w.derivative(r) / r;
+      const double m = j >= a.fluid_begin ? 1.0 : 0.0;
+      const double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
+      gx += f * (axx * dx + axy * dy);
+      gy += f * (axy * dx + ayy * dy);
+    }
+    return {gx, gy};
   }
 };
 

@@ -11,6 +11,7 @@
 #include "core/SchemeTable.h"
 #include "core/Vec2.h"
 #include "operators/MpsOperators.h"
+#include "physics/DensityRate_Randles1996.h"
 #include "physics/GradientRenormalisation_Khayyer2011.h"
 
 namespace wcmps {
@@ -68,6 +69,9 @@ struct PressureGradient_Suzuki2007 {
   const std::uint8_t* near_wall = nullptr;
   /// rho0 g: the hydrostatic gradient that the "khayyer2011-hydrostatic" form reads exactly.
   Vec2 rho_g;
+  /// With density_rate = "randles1996": the band's correctors q (L - I), gathered by every
+  /// fluid particle (DensityRate_Randles1996::gathered_gradient); unset (xx null) otherwise.
+  DensityRate_Randles1996::Excess excess;
 
   double own(const double* p_over_n2, std::int64_t i) const {
     if constexpr (kSwitch) {
@@ -91,15 +95,27 @@ struct PressureGradient_Suzuki2007 {
           const VariationalSums s = ops.variational_sums(i, nb, part, x, y, p_over_n2);
           const Vec2 d = R::renormalised(s.m, {s.dx, s.dy});
           const double t = ti + p_over_n2[i];
-          return {c * (d.x + t * s.sx), c * (d.y + t * s.sy)};
+          return Vec2{c * (d.x + t * s.sx), c * (d.y + t * s.sy)} + band_excess(ops, i, part, x, y);
         } else {
           const VariationalMoments s = ops.variational_moments(i, nb, part, x, y, p_over_n2, ti);
           const Vec2 h = R::hydrostatic(s.m, rho_g);
-          return {c * s.gx + h.x, c * s.gy + h.y};
+          return Vec2{c * s.gx + h.x, c * s.gy + h.y} + band_excess(ops, i, part, x, y);
         }
       }
     }
+    if (excess.reaches(i, part)) {
+      const Vec2 g = DensityRate_Randles1996::gathered_gradient(
+          ops.kernel(), i, part, x, y, p_over_n2, own(p_over_n2, i), excess);
+      return g * (ops.gradient_correction() * ops.n0());
+    }
     return ops.gradient_variational(i, part, x, y, p_over_n2, own(p_over_n2, i));
+  }
+  /// What the band's correctors add to a renormalised particle's gradient.
+  Vec2 band_excess(const MpsOperators& ops, std::int64_t i, IdRange part, const double* x,
+                   const double* y) const {
+    if (!excess.reaches(i, part)) return {};
+    return DensityRate_Randles1996::gathered_excess(ops.kernel(), i, part, x, y, excess) *
+           (ops.gradient_correction() * ops.n0());
   }
 };
 
@@ -122,6 +138,7 @@ struct GradientOptions {
   const std::uint8_t* band = nullptr;
   const std::uint8_t* near_wall = nullptr;  ///< fluid near a boundary, not renormalised
   Vec2 rho_g;                               ///< rho0 g
+  DensityRate_Randles1996::Excess excess;   ///< the band's correctors (density_rate)
 };
 
 /// Calls f(Scheme{}) with the scheme type that `s` names, the variational gradient with the
@@ -138,24 +155,24 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
       switch (o.renormalisation) {
         case R::Khayyer2011:
           if (o.tensile_switch) {
-            return f(
-                PressureGradient_Suzuki2007<true, R::Khayyer2011>{exempt, o.band, o.near_wall, {}});
+            return f(PressureGradient_Suzuki2007<true, R::Khayyer2011>{
+                exempt, o.band, o.near_wall, {}, o.excess});
           }
-          return f(
-              PressureGradient_Suzuki2007<false, R::Khayyer2011>{nullptr, o.band, o.near_wall, {}});
+          return f(PressureGradient_Suzuki2007<false, R::Khayyer2011>{
+              nullptr, o.band, o.near_wall, {}, o.excess});
         case R::Hydrostatic:
           if (o.tensile_switch) {
             return f(PressureGradient_Suzuki2007<true, R::Hydrostatic>{exempt, o.band, o.near_wall,
-                                                                       o.rho_g});
+                                                                       o.rho_g, o.excess});
           }
           return f(PressureGradient_Suzuki2007<false, R::Hydrostatic>{nullptr, o.band, o.near_wall,
-                                                                      o.rho_g});
+                                                                      o.rho_g, o.excess});
         case R::None:
           break;
       }
       if (o.tensile_switch)
-        return f(PressureGradient_Suzuki2007<true>{exempt, nullptr, nullptr, {}});
-      return f(PressureGradient_Suzuki2007<false>{});
+        return f(PressureGradient_Suzuki2007<true>{exempt, nullptr, nullptr, {}, o.excess});
+      return f(PressureGradient_Suzuki2007<false>{nullptr, nullptr, nullptr, {}, o.excess});
     case PressureGradientScheme::Koshizuka1998Min:
       break;
   }

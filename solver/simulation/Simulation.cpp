@@ -141,7 +141,12 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     in_band_.resize(ps.size());
     band_.reserve(static_cast<std::size_t>(ps.fluid_count()));
   }
-  if (band_rate_) band_corrector_.resize(ps.size());
+  if (band_rate_) {
+    band_corrector_.resize(ps.size());
+    band_axx_.resize(ps.size());
+    band_axy_.resize(ps.size());
+    band_ayy_.resize(ps.size());
+  }
   max_speed_ = root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     return sq(ps.now.u[i]) + sq(ps.now.v[i]);
   }));
@@ -614,7 +619,7 @@ void Simulation::compute_pressure(double dt) {
 void Simulation::correct_band_rate(double dt) {
   // The prediction's pass advanced n with the summed rate at (r^n, u^n); in the band, that rate
   // is replaced by the corrected one from the same pairs, and the corrector kept for the
-  // pressure gradient (correct_band_gradient). Each particle writes its own n.
+  // pressure gradient (set_band_excess). Each particle writes its own n.
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
@@ -629,24 +634,19 @@ void Simulation::correct_band_rate(double dt) {
   });
 }
 
-void Simulation::correct_band_gradient(double dt, const double* p_over_n2) {
-  // The partner of the band's rate: what its correctors add to the variational gradient,
-  // scattered from each band particle to its neighbours (serial: the band is a few per cent of
-  // the fluid, and the sums into a particle must not race), at the positions the gradient reads.
-  // correct_band_rate wrote the corrector of every particle of this step's band.
-  ParticleSet& ps = scene_.particles;
-  ParticleState& t = ps.next;
-  const double c = -dt / density_ * ops_.gradient_correction() * ops_.n0();
-  for (const std::int32_t j : band_) {
+void Simulation::set_band_excess(const double* p_over_n2) {
+  // The partner of the band's rate: q (L - I) of each particle of this step's band, which the
+  // pressure gradient's pass gathers from every neighbour (DensityRate_Randles1996::
+  // gathered_gradient). correct_band_rate wrote the corrector of every one of them;
+  // find_surface_band cleared the last step's band.
+  parallel_for(0, static_cast<std::int64_t>(band_.size()), [&](std::int64_t k) {
+    const std::int32_t j = band_[static_cast<std::size_t>(k)];
     const DensityRate_Randles1996::Corrector& l = band_corrector_[j];
-    if (l.identity()) continue;
-    DensityRate_Randles1996::scatter_gradient(ops_.kernel(), j, neighbours_.of(j), t.x.data(),
-                                              t.y.data(), p_over_n2[j], l, ps.fluid_begin(),
-                                              [&](std::int64_t i, double gx, double gy) {
-                                                t.u[i] += c * gx;
-                                                t.v[i] += c * gy;
-                                              });
-  }
+    const double q = p_over_n2[j];
+    band_axx_[j] = q * (l.xx - 1.0);
+    band_axy_[j] = q * l.xy;
+    band_ayy_[j] = q * (l.yy - 1.0);
+  });
 }
 
 void Simulation::cap_surface_pressure(double dt) {
@@ -690,6 +690,7 @@ void Simulation::find_surface_band() {
   for (const std::int32_t j : band_) {
     band_x_[j] = band_y_[j] = 0.0;
     in_band_[j] = 0;
+    if (band_rate_) band_axx_[j] = band_axy_[j] = band_ayy_[j] = 0.0;
   }
   band_.clear();
   const Kernel& w = ops_.kernel();
@@ -729,6 +730,9 @@ void Simulation::correct(double dt) {
   with_pressure_gradient(gradient_scheme_, gradient_options(), [&](auto scheme) {
     using Scheme = decltype(scheme);
     const double* input = gradient_input<Scheme>();
+    if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
+      if (band_rate_) set_band_excess(input);
+    }
     // The wall collisions of i need only its corrected velocity and the boundary particles'
     // (which this loop does not change): applied in the same pass over its neighbours' list.
     const bool collide = collision_scheme_ != WallCollisionScheme::None;
@@ -740,12 +744,10 @@ void Simulation::correct(double dt) {
       return collide && collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
                                          ps.kind.data()) > 0;
     });
+    // The band's correctors leave the pairs with boundary particles plain: the body's force
+    // has no part of them. (The case parser lets density_rate with the variational gradient
+    // only.)
     if (body_) body_force_next_ = body_force(scheme, input);
-    // No band particle with a corrector has a boundary particle within re: the body's force
-    // has no part of it. (The case parser lets density_rate with the variational gradient only.)
-    if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
-      if (band_rate_) correct_band_gradient(dt, input);
-    }
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }

@@ -117,8 +117,9 @@ class Simulation {
   void cap_surface_pressure(double);  // physics/SurfacePressureCap.h (dt)
   void correct_band_rate(double);     // physics/DensityRate_Randles1996.h (dt)
   void find_surface_band();           // the surface's band and its normals
-  /// The band rate's partner in the pressure gradient (physics/DensityRate_Randles1996.h).
-  void correct_band_gradient(double dt, const double* p_over_n2);
+  /// The band rate's partner in the pressure gradient (physics/DensityRate_Randles1996.h): the
+  /// band's correctors q (L - I), which the gradient's pass gathers.
+  void set_band_excess(const double* p_over_n2);
   /// The positions the free surface is found at: r^n where the number density is evolved (the
   /// prediction summed n and G there), r* where it is summed (Eq. 2.17).
   const ParticleState& surface_positions() const {
@@ -139,8 +140,13 @@ class Simulation {
   /// particles it leaves out (the free-surface band), the renormalisation and the particles it
   /// leaves out (the band, and the fluid near a boundary), rho0 g.
   GradientOptions gradient_options() const {
-    return {tensile_switch_, renormalisation_, in_band_.data(), near_wall_.data(),
-            gravity_ * density_};
+    const DensityRate_Randles1996::Excess excess =
+        band_rate_
+            ? DensityRate_Randles1996::Excess{band_axx_.data(), band_axy_.data(), band_ayy_.data(),
+                                              scene_.particles.fluid_begin(), in_band_.data()}
+            : DensityRate_Randles1996::Excess{};
+    return {tensile_switch_,   renormalisation_,    in_band_.data(),
+            near_wall_.data(), gravity_ * density_, excess};
   }
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();
@@ -169,6 +175,9 @@ class Simulation {
   bool band_rate_;
   DensityRate_Randles1996 band_rate_rule_;
   std::vector<DensityRate_Randles1996::Corrector> band_corrector_;
+  // q (L - I) of this step's band particles, zero elsewhere (the gathered gradient reads every
+  // particle's).
+  std::vector<double> band_axx_, band_axy_, band_ayy_;
   DensitySumsSetup sums_setup_;
   DensityInputs density_inputs_;  // of the prediction's pass (its n set at each step)
   FreeSurfaceScheme surface_scheme_;
