@@ -203,23 +203,7 @@ struct DensityRate_Randles1996 {
   };
   static Vec2 gathered_gradient(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
                                 const double* y, const double* q, double ti, const Excess& a) {
-    const double xi = x[i], yi = y[i];
-    const double ixx = a.xx[i], ixy = a.xy[i], iyy = a.yy[i];
-    const std::int32_t* id = nb.first;
-    double gx = 0.0, gy = 0.0;
-#pragma omp simd reduction(+ : gx, gy)
-    for (std::int64_t k = 0; k < nb.size(); ++k) {
-      const std::int32_t j = id[k];
-      const double dx = xi - x[j], dy = yi - y[j];
-      const double r = std::sqrt(dx * dx + dy * dy);
-      const double f = w.derivative(r) / r;
-      const double s = ti + q[j];
-      const double m = j >= a.fluid_begin ? 1.0 : 0.0;
-      const double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
-      gx += f * (s * dx + axx * dx + axy * dy);
-      gy += f * (s * dy + axy * dx + ayy * dy);
-    }
-    return {gx, gy};
+    return gathered<true>(w, i, nb, x, y, q, ti, a);
   }
 
   /// What gathered_gradient adds to the plain gradient of i (unscaled): sum_j (A_j + [j fluid]
@@ -227,6 +211,14 @@ struct DensityRate_Randles1996 {
   /// renormalised gradients, PressureGradient.h).
   static Vec2 gathered_excess(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
                               const double* y, const Excess& a) {
+    return gathered<false>(w, i, nb, x, y, nullptr, 0.0, a);
+  }
+
+ private:
+  /// The pair loop of both: with kPlain the plain terms (t_i + q_j) too.
+  template <bool kPlain>
+  static Vec2 gathered(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
+                       const double* y, const double* q, double ti, const Excess& a) {
     const double xi = x[i], yi = y[i];
     const double ixx = a.xx[i], ixy = a.xy[i], iyy = a.yy[i];
     const std::int32_t* id = nb.first;
@@ -238,7 +230,12 @@ struct DensityRate_Randles1996 {
       const double r = std::sqrt(dx * dx + dy * dy);
       const double f = w.derivative(r) / r;
       const double m = j >= a.fluid_begin ? 1.0 : 0.0;
-      const double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
+      double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
+      if constexpr (kPlain) {
+        const double s = ti + q[j];
+        axx += s;
+        ayy += s;
+      }
       gx += f * (axx * dx + axy * dy);
       gy += f * (axy * dx + ayy * dy);
     }
