@@ -114,25 +114,41 @@ struct DensityRate_Randles1996 {
 
   static Sums sums(const Kernel& w, std::int64_t i, IdRange nb, const double* x, const double* y,
                    const double* u, const double* v, std::int64_t fluid_begin) {
-    const double re2 = w.re * w.re;
+    // Without a branch, so that the loop vectorises (the note of MpsOperators.h): pairs at
+    // r >= re have W' = 0, and a particle on top of i (r = 0: no direction) is selected out.
+    const Kernel k = w;
+    const double re2 = k.re * k.re;
     const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
-    Sums s;
-    for (const std::int32_t j : nb) {
+    const std::int32_t* id = nb.first;
+    double bxu = 0.0, bxv = 0.0, byu = 0.0, byv = 0.0, pxx = 0.0, pxy = 0.0, pyy = 0.0;
+    double boundary = 0.0;  // the count of boundary pairs (a double: GCC 12 keeps an int's scalar)
+#pragma omp simd reduction(+ : bxu, bxv, byu, byv, pxx, pxy, pyy, boundary)
+    for (std::int64_t m = 0; m < nb.size(); ++m) {
+      const std::int32_t j = id[m];
       const double dx = x[j] - xi, dy = y[j] - yi;
       const double r2 = dx * dx + dy * dy;
-      if (r2 >= re2 || !(r2 > 0.0)) continue;
       const double r = std::sqrt(r2);
-      const double c = w.derivative(r) / r;
+      const bool paired = r2 > 0.0;
+      const double c = paired ? k.derivative(r) / r : 0.0;
       const double du = u[j] - ui, dv = v[j] - vi;
-      s.boundary = s.boundary || j < fluid_begin;
-      s.bxu += c * dx * du;
-      s.bxv += c * dx * dv;
-      s.byu += c * dy * du;
-      s.byv += c * dy * dv;
-      s.pxx -= c * dx * dx;
-      s.pxy -= c * dx * dy;
-      s.pyy -= c * dy * dy;
+      boundary += (paired && r2 < re2 && j < fluid_begin) ? 1.0 : 0.0;
+      bxu += c * dx * du;
+      bxv += c * dx * dv;
+      byu += c * dy * du;
+      byv += c * dy * dv;
+      pxx -= c * dx * dx;
+      pxy -= c * dx * dy;
+      pyy -= c * dy * dy;
     }
+    Sums s;
+    s.bxu = bxu;
+    s.bxv = bxv;
+    s.byu = byu;
+    s.byv = byv;
+    s.pxx = pxx;
+    s.pxy = pxy;
+    s.pyy = pyy;
+    s.boundary = boundary > 0.0;
     return s;
   }
 
@@ -143,15 +159,19 @@ struct DensityRate_Randles1996 {
 
   /// m P_c^-1, P_c: P with its eigenvalues held to at least kMinEigenvalue m.
   Corrector renormalisation(const Sums& s) const {
+    // P's eigenvalues mean +- rad; its spectral projectors E1 = (P - (mean - rad) I) / (2 rad)
+    // and E2 = I - E1, so that P_c^-1 = E1 / l1 + E2 / l2 without the eigenvectors' angle
+    // (E1's entries stay within [0, 1] as rad -> 0). An isotropic P (rad = 0) is m I / l1.
     const double mean = 0.5 * (s.pxx + s.pyy);
-    const double rad = std::hypot(0.5 * (s.pxx - s.pyy), s.pxy);
+    const double half_diff = 0.5 * (s.pxx - s.pyy);
+    const double rad = std::sqrt(half_diff * half_diff + s.pxy * s.pxy);
     const double floor = kMinEigenvalue * m;
     const double l1 = std::max(mean + rad, floor), l2 = std::max(mean - rad, floor);
-    const double th = 0.5 * std::atan2(2.0 * s.pxy, s.pxx - s.pyy);
-    const double cs = std::cos(th), sn = std::sin(th);
-    // P_c^-1 = v1 v1^T / l1 + v2 v2^T / l2, with v1 = (cs, sn), v2 = (-sn, cs).
-    return {m * (cs * cs / l1 + sn * sn / l2), m * cs * sn * (1.0 / l1 - 1.0 / l2),
-            m * (sn * sn / l1 + cs * cs / l2)};
+    if (!(rad > 0.0)) return {m / l1, 0.0, m / l1};
+    const double exx = 0.5 + 0.5 * half_diff / rad, exy = 0.5 * s.pxy / rad;
+    const double a = m / l1, b = m / l2;
+    // E2 = I - E1: its xx is E1's yy, its xy -E1's xy.
+    return {a * exx + b * (1.0 - exx), (a - b) * exy, a * (1.0 - exx) + b * exx};
   }
 
   /// Whether a band particle is struck (above): its L is then I.

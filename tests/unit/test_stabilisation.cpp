@@ -634,6 +634,37 @@ TEST(DensityRate, InsideTheWaterItIsTheSummedRate) {
   EXPECT_NEAR(DensityRate_Randles1996::rate(s, l), s.summed(), 1e-12 * rule.m);
 }
 
+TEST(DensityRate, TheRenormalisationIsMTimesTheInverseOfTheFlooredMomentMatrix) {
+  // L = m P_c^-1 from P's spectral projectors, against the eigenvectors' angle (the textbook
+  // form, which the code used before): symmetric P's of every orientation, with neither, one or
+  // both eigenvalues under the floor m / 2, and isotropic ones (no angle at all).
+  const auto rule = rate_rule();
+  const double m = rule.m, floor = DensityRate_Randles1996::kMinEigenvalue * m;
+  int floored = 0;
+  for (const double major : {1.3, 0.9, 0.7, 0.45, 0.2}) {
+    for (const double minor : {1.3, 0.8, 0.5, 0.3, 0.1}) {
+      if (minor > major) continue;
+      for (int k = 0; k < 12; ++k) {
+        const double th = 0.27 * k;  // radians, every orientation
+        const double cs = std::cos(th), sn = std::sin(th);
+        const double a = major * m, b = minor * m;  // P = a v1 v1^T + b v2 v2^T
+        DensityRate_Randles1996::Sums s;
+        s.pxx = a * cs * cs + b * sn * sn;
+        s.pxy = (a - b) * cs * sn;
+        s.pyy = a * sn * sn + b * cs * cs;
+        const double l1 = std::max(a, floor), l2 = std::max(b, floor);
+        floored += (b < floor) + (a < floor);
+        const auto l = rule.renormalisation(s);
+        // Rounding of a few operations on entries of order m / floor = 2.
+        EXPECT_NEAR(l.xx, m * (cs * cs / l1 + sn * sn / l2), 1e-13) << major << " " << minor;
+        EXPECT_NEAR(l.xy, m * cs * sn * (1.0 / l1 - 1.0 / l2), 1e-13) << major << " " << minor;
+        EXPECT_NEAR(l.yy, m * (sn * sn / l1 + cs * cs / l2), 1e-13) << major << " " << minor;
+      }
+    }
+  }
+  EXPECT_GT(floored, 0);  // the floor was exercised
+}
+
 TEST(DensityRate, ABoundaryParticleWithinReOrAStruckOneKeepsL_I) {
   // The bottom two rows are boundary particles (laid on the wall's lattice): the rows above
   // them keep L = I; the particle of the top row, 5 DL above them, does not.
