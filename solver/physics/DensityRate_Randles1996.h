@@ -204,22 +204,19 @@ struct DensityRate_Randles1996 {
   ///
   /// Only a band particle has an A: a particle with none in its list (the water deeper than
   /// re + skin below the band) has nothing to gather, and reaches() sends it to the plain
-  /// gradient, which costs two thirds as much per pair (no loads of A).
+  /// gradient, which costs two thirds as much per pair (no loads of A). Which particles have
+  /// one is marked from the band's side (Simulation::set_band_excess: each band particle marks
+  /// itself and the fluid in its list, the lists being symmetric), with the step's stamp, so
+  /// that the marks need no clearing and no pass over every list.
   struct Excess {
     const double* xx = nullptr;
     const double* xy = nullptr;
     const double* yy = nullptr;
     std::int64_t fluid_begin = 0;
-    const std::uint8_t* band = nullptr;  ///< 1: a particle of this step's band (its A set)
-    /// Whether particle i or one in its list nb is in the band.
-    bool reaches(std::int64_t i, IdRange nb) const {
-      if (!xx) return false;
-      if (band[i]) return true;
-      for (const std::int32_t j : nb) {
-        if (band[j]) return true;
-      }
-      return false;
-    }
+    const std::uint32_t* reached = nullptr;  ///< stamp: i or one in its list is in the band
+    std::uint32_t stamp = 0;                 ///< this step's mark
+    /// Whether fluid particle i or one in its list is in the band.
+    bool reaches(std::int64_t i) const { return xx && reached[i] == stamp; }
   };
   static Vec2 gathered_gradient(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
                                 const double* y, const double* q, double ti, const Excess& a) {

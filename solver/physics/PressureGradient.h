@@ -103,7 +103,7 @@ struct PressureGradient_Suzuki2007 {
         }
       }
     }
-    if (excess.reaches(i, part)) {
+    if (excess.reaches(i)) {
       const Vec2 g = DensityRate_Randles1996::gathered_gradient(
           ops.kernel(), i, part, x, y, p_over_n2, own(p_over_n2, i), excess);
       return g * (ops.gradient_correction() * ops.n0());
@@ -113,7 +113,7 @@ struct PressureGradient_Suzuki2007 {
   /// What the band's correctors add to a renormalised particle's gradient.
   Vec2 band_excess(const MpsOperators& ops, std::int64_t i, IdRange part, const double* x,
                    const double* y) const {
-    if (!excess.reaches(i, part)) return {};
+    if (!excess.reaches(i)) return {};
     return DensityRate_Randles1996::gathered_excess(ops.kernel(), i, part, x, y, excess) *
            (ops.gradient_correction() * ops.n0());
   }

@@ -146,6 +146,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     band_axx_.resize(ps.size());
     band_axy_.resize(ps.size());
     band_ayy_.resize(ps.size());
+    band_reach_.resize(ps.size());
   }
   max_speed_ = root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     return sq(ps.now.u[i]) + sq(ps.now.v[i]);
@@ -638,7 +639,12 @@ void Simulation::set_band_excess(const double* p_over_n2) {
   // The partner of the band's rate: q (L - I) of each particle of this step's band, which the
   // pressure gradient's pass gathers from every neighbour (DensityRate_Randles1996::
   // gathered_gradient). correct_band_rate wrote the corrector of every one of them;
-  // find_surface_band cleared the last step's band.
+  // find_surface_band cleared the last step's band. Each band particle also marks itself and
+  // the fluid in its list with the step's stamp: the particles that have something to gather
+  // (Excess::reaches). Two band particles may mark the same one: the stores are atomic.
+  const std::int64_t fluid = scene_.particles.fluid_begin();
+  std::uint32_t* reach = band_reach_.data();
+  const std::uint32_t stamp = band_stamp_;
   parallel_for(0, static_cast<std::int64_t>(band_.size()), [&](std::int64_t k) {
     const std::int32_t j = band_[static_cast<std::size_t>(k)];
     const DensityRate_Randles1996::Corrector& l = band_corrector_[j];
@@ -646,6 +652,10 @@ void Simulation::set_band_excess(const double* p_over_n2) {
     band_axx_[j] = q * (l.xx - 1.0);
     band_axy_[j] = q * l.xy;
     band_ayy_[j] = q * (l.yy - 1.0);
+    __atomic_store_n(&reach[j], stamp, __ATOMIC_RELAXED);
+    for (const std::int32_t m : neighbours_.of(j)) {
+      if (m >= fluid) __atomic_store_n(&reach[m], stamp, __ATOMIC_RELAXED);
+    }
   });
 }
 
@@ -693,6 +703,11 @@ void Simulation::find_surface_band() {
     if (band_rate_) band_axx_[j] = band_axy_[j] = band_ayy_[j] = 0.0;
   }
   band_.clear();
+  if (band_rate_ && ++band_stamp_ == 0) {
+    // The stamp wrapped (after 2^32 steps): old marks could read as this step's.
+    std::fill(band_reach_.begin(), band_reach_.end(), 0u);
+    band_stamp_ = 1;
+  }
   const Kernel& w = ops_.kernel();
   const double re2 = ops_.re() * ops_.re();
   auto add = [&](std::int64_t j, double weight, Vec2 nu) {

@@ -141,9 +141,10 @@ class Simulation {
   /// leaves out (the band, and the fluid near a boundary), rho0 g.
   GradientOptions gradient_options() const {
     const DensityRate_Randles1996::Excess excess =
-        band_rate_
-            ? DensityRate_Randles1996::Excess{band_axx_.data(), band_axy_.data(), band_ayy_.data(),
-                                              scene_.particles.fluid_begin(), in_band_.data()}
+        band_rate_ && band_stamp_ != 0  // 0: no band has been found yet
+            ? DensityRate_Randles1996::Excess{band_axx_.data(),   band_axy_.data(),
+                                              band_ayy_.data(),   scene_.particles.fluid_begin(),
+                                              band_reach_.data(), band_stamp_}
             : DensityRate_Randles1996::Excess{};
     return {tensile_switch_,   renormalisation_,    in_band_.data(),
             near_wall_.data(), gravity_ * density_, excess};
@@ -211,6 +212,10 @@ class Simulation {
   std::vector<double> n_sum_, grad_x_, grad_y_, band_x_, band_y_;
   std::vector<std::int32_t> band_;
   std::vector<std::uint8_t> in_band_;
+  // Under density_rate: band_stamp_ where the particle or one in its list is in this step's band
+  // (set_band_excess), and the step's stamp (find_surface_band).
+  std::vector<std::uint32_t> band_reach_;
+  std::uint32_t band_stamp_ = 0;
   std::vector<std::uint8_t> wet_;  // wall particles with water in front of them (surface scan)
   std::vector<double> cap_;        // surface particles' pressure caps (surface_pressure_cap)
 
