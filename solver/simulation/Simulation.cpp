@@ -198,6 +198,21 @@ void Simulation::find_fluid_near_walls() {
     near_wall_[i] =
         std::any_of(nb.begin(), nb.end(), [&](std::int32_t j) { return j < ps.fluid_begin(); });
   });
+  walls_in_reach_.clear();
+  walls_out_of_reach_.clear();
+  pairs_in_reach_ = 0;
+  // Those that something moving can reach: the fluid, or the body (its own and the fixed
+  // walls it slides along, whose sums it changes).
+  const auto moves = [&](std::int64_t j) { return j >= ps.fluid_begin() || (body_ && in_body(j)); };
+  for (std::int64_t w = 0; w < ps.wall_end(); ++w) {
+    const IdRange nb = neighbours_.of(w);
+    if (moves(w) || std::any_of(nb.begin(), nb.end(), moves)) {
+      walls_in_reach_.push_back(static_cast<std::int32_t>(w));
+      pairs_in_reach_ += nb.size();
+    } else {
+      walls_out_of_reach_.push_back(static_cast<std::int32_t>(w));
+    }
+  }
   // The body's particles are boundary particles: only those near a wall can be near the body.
   near_body_.clear();
   if (!body_) return;
@@ -419,6 +434,7 @@ void Simulation::load(StateReader& in) {
   neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), list_cutoff(),
                     list_owners_);
   find_fluid_near_walls();
+  settle_walls_out_of_reach();
   built_ = true;
   builds_ = 0;
   pairs_visited_ = 0;
@@ -451,6 +467,7 @@ void Simulation::rebuild_neighbours() {
   drift_ = 0.0;
   if (body_) body_built_s_ = body_->state().s;
   find_fluid_near_walls();
+  settle_walls_out_of_reach();
   built_ = true;
   ++builds_;
 }
@@ -525,30 +542,24 @@ void Simulation::predict(double dt) {
 void Simulation::compute_number_density() {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
-  const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
-  const bool gradient = scan || shifting_scheme_ != ShiftingScheme::None;
-  // Where the particles' positions are read for the surface: r^n under an evolved n (the
-  // prediction summed the fluid's n and G there), r* under the summed n (Eq. 2.17).
-  const ParticleState& at = surface_positions();
-  // The summed n of particle i at the positions `pos`, and G where it is asked for.
-  const auto sum = [&](std::int64_t i, bool with_gradient, const ParticleState& pos) {
+  // Wall particles within the fluid's reach (the others: settle_walls_out_of_reach).
+  sum_walls(walls_in_reach_);
+  pairs_visited_ += pairs_in_reach_;
+  if (density_scheme_ == NumberDensityScheme::Continuity) return;  // summed in the prediction
+  // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
+  const bool gradient =
+      surface_scheme_ == FreeSurfaceScheme::Marrone2010 || shifting_scheme_ != ShiftingScheme::None;
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     const IdRange nb = neighbours_.of(i);
-    if (with_gradient) {
-      const DensitySums d = density_sums<true>(sums_setup_, i, nb, pos.x.data(), pos.y.data());
+    if (gradient) {
+      const DensitySums d = density_sums<true>(sums_setup_, i, nb, t.x.data(), t.y.data());
       t.n[i] = d.n;
       grad_x_[i] = d.gradient.x;
       grad_y_[i] = d.gradient.y;
     } else {
-      t.n[i] = ops_.number_density(i, nb, pos.x.data(), pos.y.data());
+      t.n[i] = ops_.number_density(i, nb, t.x.data(), t.y.data());
     }
-  };
-  // Wall particles: their summed n (the "eos" wall pressure, the frames) and, for the surface
-  // scan, its gradient (which of them are wet).
-  parallel_for(0, ps.wall_end(), [&](std::int64_t w) { sum(w, scan, at); });
-  pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
-  if (density_scheme_ == NumberDensityScheme::Continuity) return;  // summed in the prediction
-  // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
-  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) { sum(i, gradient, t); });
+  });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
@@ -566,13 +577,7 @@ void Simulation::compute_pressure(double dt) {
   const bool evolved = density_scheme_ == NumberDensityScheme::Continuity;
   const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
   const std::int64_t fluid = ps.fluid_begin();
-  if (scan) {
-    // Which wall particles are wet: only those fill a fluid particle's scan region.
-    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
-      wet_[w] = !scan_.is_dry(w, neighbours_.of(w), t.x.data(), t.y.data(), t.n[w],
-                              {grad_x_[w], grad_y_[w]}, [&](std::int32_t j) { return j >= fluid; });
-    });
-  }
+  if (scan) find_wet_walls(walls_in_reach_);
   const auto fills = [&](std::int32_t j) {
     return j >= fluid || wet_[j < ps.wall_end() ? j : ps.ghost_source(j)];
   };
@@ -591,9 +596,56 @@ void Simulation::compute_pressure(double dt) {
     t.p[i] = !t.surface[i] ? pressure_bound_(p) : evolved ? std::max(p, 0.0) : 0.0;
   });
   if (surface_cap_) cap_surface_pressure(dt);
+  compute_wall_pressure(walls_in_reach_);
+  if (wall_scheme_ != WallPressureScheme::Eos) pairs_visited_ += pairs_in_reach_;
+  // Ghost particles: the pressure of their wall particle along the wall normal (section 2.6).
+  parallel_for(ps.wall_end(), ps.fluid_begin(),
+               [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
+}
+
+void Simulation::sum_walls(const std::vector<std::int32_t>& walls) {
+  // Their summed n (the "eos" wall pressure, the frames) and, for the surface scan, its
+  // gradient (which of them are wet), at the positions the surface is found at.
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const ParticleState& at = surface_positions();
+  const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
+  parallel_for(0, static_cast<std::int64_t>(walls.size()), [&](std::int64_t k) {
+    const std::int32_t w = walls[static_cast<std::size_t>(k)];
+    const IdRange nb = neighbours_.of(w);
+    if (scan) {
+      const DensitySums d = density_sums<true>(sums_setup_, w, nb, at.x.data(), at.y.data());
+      t.n[w] = d.n;
+      grad_x_[w] = d.gradient.x;
+      grad_y_[w] = d.gradient.y;
+    } else {
+      t.n[w] = ops_.number_density(w, nb, at.x.data(), at.y.data());
+    }
+  });
+}
+
+void Simulation::find_wet_walls(const std::vector<std::int32_t>& walls) {
+  // Which wall particles are wet: only those fill a fluid particle's scan region.
+  const ParticleSet& ps = scene_.particles;
+  const ParticleState& t = ps.next;
+  const std::int64_t fluid = ps.fluid_begin();
+  parallel_for(0, static_cast<std::int64_t>(walls.size()), [&](std::int64_t k) {
+    const std::int32_t w = walls[static_cast<std::size_t>(k)];
+    wet_[w] = !scan_.is_dry(w, neighbours_.of(w), t.x.data(), t.y.data(), t.n[w],
+                            {grad_x_[w], grad_y_[w]}, [&](std::int32_t j) { return j >= fluid; });
+  });
+}
+
+void Simulation::compute_wall_pressure(const std::vector<std::int32_t>& walls) {
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const auto each = [&](auto&& f) {
+    parallel_for(0, static_cast<std::int64_t>(walls.size()),
+                 [&](std::int64_t k) { f(walls[static_cast<std::size_t>(k)]); });
+  };
   if (wall_scheme_ == WallPressureScheme::Eos) {
     // The wall particle as a fluid particle of its own summed n (Shakibaeinia & Jin 2010).
-    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+    each([&](std::int32_t w) {
       const bool on_surface = surface_.is_surface(t.n[w]);
       t.p[w] = on_surface ? 0.0 : pressure_bound_(eos_.pressure(t.n[w]));
       t.surface[w] = on_surface ? 1 : 0;
@@ -602,7 +654,7 @@ void Simulation::compute_pressure(double dt) {
     // A moving wall's particles feel g - a (Adami et al. 2012, Eq. 27).
     const IndexRange body = body_ ? body_->particles().walls : IndexRange{0, 0};
     const Vec2 body_g = body_ ? gravity_ - body_->downslope() * body_next_.a : gravity_;
-    parallel_for(0, ps.wall_end(), [&](std::int64_t w) {
+    each([&](std::int32_t w) {
       const Vec2 g = w >= body.first && w < body.second ? body_g : gravity_;
       const auto p =
           WallPressure_Adami2012::pressure(w, neighbours_.of(w), t.x.data(), t.y.data(), t.p.data(),
@@ -610,11 +662,25 @@ void Simulation::compute_pressure(double dt) {
       t.p[w] = pressure_bound_(p.value_or(0.0));
       t.surface[w] = p ? 0 : 1;
     });
-    pairs_visited_ += neighbours_.pair_count(0, ps.wall_end());
   }
-  // Ghost particles: the pressure of their wall particle along the wall normal (section 2.6).
-  parallel_for(ps.wall_end(), ps.fluid_begin(),
-               [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
+}
+
+void Simulation::settle_walls_out_of_reach() {
+  // The step's wall phases for these once, on `next` at the current positions (the fixed
+  // walls' are the same in both states), then copied to `now`: frames and checkpoints read
+  // them there. Before the first step `next` is not yet allocated: it starts as a copy of now.
+  ParticleSet& ps = scene_.particles;
+  if (walls_out_of_reach_.empty()) return;
+  const bool fresh = ps.next.n.size() != ps.now.n.size();
+  if (fresh) ps.next = ps.now;
+  sum_walls(walls_out_of_reach_);
+  if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) find_wet_walls(walls_out_of_reach_);
+  compute_wall_pressure(walls_out_of_reach_);
+  for (const std::int32_t w : walls_out_of_reach_) {
+    ps.now.n[w] = ps.next.n[w];
+    ps.now.p[w] = ps.next.p[w];
+    ps.now.surface[w] = ps.next.surface[w];
+  }
 }
 
 void Simulation::correct_band_rate(double dt) {

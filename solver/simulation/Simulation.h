@@ -113,7 +113,14 @@ class Simulation {
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
-  void find_fluid_near_walls();       // at rebuilds: near_wall_ and near_body_
+  void find_fluid_near_walls();       // at rebuilds: near_wall_, near_body_, walls_in_reach_
+  /// The wall particles' phases of a step, for the wall particles listed: the summed n (and G
+  /// for the surface scan), which of them are wet, their pressure and free-surface flag.
+  void sum_walls(const std::vector<std::int32_t>& walls);
+  void find_wet_walls(const std::vector<std::int32_t>& walls);
+  void compute_wall_pressure(const std::vector<std::int32_t>& walls);
+  /// At rebuilds: the same for the walls out of every fluid particle's reach, in both states.
+  void settle_walls_out_of_reach();
   void cap_surface_pressure(double);  // physics/SurfacePressureCap.h (dt)
   void correct_band_rate(double);     // physics/DensityRate_Randles1996.h (dt)
   void find_surface_band();           // the surface's band and its normals
@@ -240,6 +247,12 @@ class Simulation {
   BodyForce body_force_next_;            // of the step in progress
   double body_built_s_ = 0.0;            // its S at the last build of the lists
   std::vector<std::int32_t> near_body_;  // fluid particles with body particles in their lists
+  // Wall particles with a fluid particle in their lists, and the body's: the step computes
+  // these. The others (walls_out_of_reach_) are in no fluid particle's list, so no fluid
+  // particle reads them until the next build, and a fixed wall particle's sums over boundary
+  // particles alone do not change: settle_walls_out_of_reach() sets them once per build.
+  std::vector<std::int32_t> walls_in_reach_, walls_out_of_reach_;
+  std::int64_t pairs_in_reach_ = 0;      // the length of their lists
   std::vector<std::int32_t> body_part_;  // scratch: the body particles in one list
   std::vector<BodySample> body_history_;
 };

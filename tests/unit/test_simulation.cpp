@@ -191,6 +191,36 @@ TEST(Simulation, AStruckSurfaceParticleKeepsItsOwnPressureUntilItsNIsBack) {
   set_thread_count(2);
 }
 
+// The walls above the water are in no fluid particle's list: the step leaves them alone and
+// each build sets their summed n (over boundary particles, which do not move), pressure and
+// flag once. After 150 steps they hold what summing them afresh gives.
+TEST(Simulation, WallParticlesOutOfTheFluidsReachHoldTheirOwnSums) {
+  set_thread_count(2);
+  const CaseSpec spec = minimal();
+  Simulation sim(spec, build_scene(spec));
+  for (int k = 0; k < 150; ++k) sim.step(1.0);
+  const ParticleSet& ps = sim.particles();
+  const ParticleState& s = ps.now;
+  const Kernel w = sim.operators().kernel();
+  const double reach = sim.list_cutoff() + spec.dl;  // beyond every list, and beyond the skin
+  int far = 0;
+  for (std::int64_t i = 0; i < ps.wall_end(); ++i) {
+    double nearest_fluid = 1e9, n = 0.0;
+    for (std::int64_t j = 0; j < ps.size(); ++j) {
+      const double r = std::hypot(s.x[j] - s.x[i], s.y[j] - s.y[i]);
+      if (j >= ps.fluid_begin()) nearest_fluid = std::min(nearest_fluid, r);
+      if (j < ps.fluid_begin() && j != i) n += w(r);
+    }
+    if (nearest_fluid < reach) continue;
+    ++far;
+    // Rounding of ~30 kernel values summed in another order.
+    EXPECT_NEAR(s.n[i], n, 1e-12) << "wall particle " << i << " at y = " << s.y[i];
+    EXPECT_EQ(s.p[i], 0.0) << i;  // no water in front of it: the fluid-extrapolated 0
+    EXPECT_EQ(s.surface[i], 1) << i;
+  }
+  EXPECT_GT(far, 4);  // the walls above the water (0.1 m) up to 0.2 m
+}
+
 TEST(Simulation, FluidWithoutForcesMovesUniformly) {
   // No gravity, a block at n = n0 (p = 0 everywhere) moving at (0.3, -0.2) m/s, far from the
   // one wall: nothing may act on it.
