@@ -549,17 +549,7 @@ void Simulation::compute_number_density() {
   // The study's n* at r* (Eq. 2.17), and G if the surface scan or the shifting needs it.
   const bool gradient =
       surface_scheme_ == FreeSurfaceScheme::Marrone2010 || shifting_scheme_ != ShiftingScheme::None;
-  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-    const IdRange nb = neighbours_.of(i);
-    if (gradient) {
-      const DensitySums d = density_sums<true>(sums_setup_, i, nb, t.x.data(), t.y.data());
-      t.n[i] = d.n;
-      grad_x_[i] = d.gradient.x;
-      grad_y_[i] = d.gradient.y;
-    } else {
-      t.n[i] = ops_.number_density(i, nb, t.x.data(), t.y.data());
-    }
-  });
+  parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) { sum_one(i, gradient, t); });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
@@ -603,25 +593,27 @@ void Simulation::compute_pressure(double dt) {
                [&](std::int64_t i) { t.p[i] = t.p[ps.ghost_source(i)]; });
 }
 
+void Simulation::sum_one(std::int64_t i, bool with_gradient, const ParticleState& pos) {
+  // The summed n of particle i at the positions `pos` into `next`, and G where it is asked for.
+  ParticleState& t = scene_.particles.next;
+  const IdRange nb = neighbours_.of(i);
+  if (with_gradient) {
+    const DensitySums d = density_sums<true>(sums_setup_, i, nb, pos.x.data(), pos.y.data());
+    t.n[i] = d.n;
+    grad_x_[i] = d.gradient.x;
+    grad_y_[i] = d.gradient.y;
+  } else {
+    t.n[i] = ops_.number_density(i, nb, pos.x.data(), pos.y.data());
+  }
+}
+
 void Simulation::sum_walls(const std::vector<std::int32_t>& walls) {
   // Their summed n (the "eos" wall pressure, the frames) and, for the surface scan, its
   // gradient (which of them are wet), at the positions the surface is found at.
-  ParticleSet& ps = scene_.particles;
-  ParticleState& t = ps.next;
   const ParticleState& at = surface_positions();
   const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
-  parallel_for(0, static_cast<std::int64_t>(walls.size()), [&](std::int64_t k) {
-    const std::int32_t w = walls[static_cast<std::size_t>(k)];
-    const IdRange nb = neighbours_.of(w);
-    if (scan) {
-      const DensitySums d = density_sums<true>(sums_setup_, w, nb, at.x.data(), at.y.data());
-      t.n[w] = d.n;
-      grad_x_[w] = d.gradient.x;
-      grad_y_[w] = d.gradient.y;
-    } else {
-      t.n[w] = ops_.number_density(w, nb, at.x.data(), at.y.data());
-    }
-  });
+  parallel_for(0, static_cast<std::int64_t>(walls.size()),
+               [&](std::int64_t k) { sum_one(walls[static_cast<std::size_t>(k)], scan, at); });
 }
 
 void Simulation::find_wet_walls(const std::vector<std::int32_t>& walls) {

@@ -117,6 +117,7 @@ class Simulation {
   /// The wall particles' phases of a step, for the wall particles listed: the summed n (and G
   /// for the surface scan), which of them are wet, their pressure and free-surface flag.
   void sum_walls(const std::vector<std::int32_t>& walls);
+  void sum_one(std::int64_t i, bool with_gradient, const ParticleState& pos);  // n (and G) of i
   void find_wet_walls(const std::vector<std::int32_t>& walls);
   void compute_wall_pressure(const std::vector<std::int32_t>& walls);
   /// At rebuilds: the same for the walls out of every fluid particle's reach, in both states.
