@@ -336,6 +336,26 @@ TEST(Stability, ATimeStepFarTooLargeIsReportedAndTheLastGoodStateKept) {
   for (double x : sim.particles().now.x) ASSERT_TRUE(std::isfinite(x));
 }
 
+// The density check stops a run on particles packed past the limit, under the evolved n as
+// under the summed one: still water's bottom rows are compressed by rho g H / (rho c0^2), more
+// than a limit of 1.001 (their summed n is too: the arrangement follows the pressure).
+TEST(Stability, ParticlesPackedPastTheDensityLimitAreReported) {
+  for (const auto density : {NumberDensityScheme::Continuity, NumberDensityScheme::Summation}) {
+    CaseSpec spec = minimal();
+    spec.number_density = density;
+    spec.max_density_ratio = 1.001;
+    Simulation sim(spec, build_scene(spec));
+    std::string reason;
+    try {
+      for (int k = 0; k < 200; ++k) sim.step(1.0);
+    } catch (const InstabilityError& e) {
+      reason = e.report().reason;
+    }
+    EXPECT_NE(reason.find("number density exceeds max_density_ratio"), std::string::npos)
+        << scheme_key(kNumberDensitySchemes, density) << ": " << reason;
+  }
+}
+
 TEST(Stability, AParticleThroughAWallIsReported) {
   // One fluid particle shot at the bottom at 200 m/s: in one fixed step of 1e-4 s it moves
   // 2 cm, through the wall row at y = -0.005 (the pressure it meets there changes its speed by
