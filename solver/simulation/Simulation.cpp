@@ -133,7 +133,10 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   }
   if (shift_in_continuity_) ps.track_shift();
   if (surface_cap_) ps.track_strikes();
-  if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) wet_.resize(ps.wall_end());
+  if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) {
+    fills_.assign(static_cast<std::size_t>(ps.size()), 0);
+    std::fill(fills_.begin() + ps.fluid_begin(), fills_.end(), 1);
+  }
   if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_ ||
       renormalisation_ != GradientRenormalisation::None || band_rate_) {
     band_x_.resize(ps.size());
@@ -567,10 +570,13 @@ void Simulation::compute_pressure(double dt) {
   const bool evolved = density_scheme_ == NumberDensityScheme::Continuity;
   const bool scan = surface_scheme_ == FreeSurfaceScheme::Marrone2010;
   const std::int64_t fluid = ps.fluid_begin();
-  if (scan) find_wet_walls(walls_in_reach_);
-  const auto fills = [&](std::int32_t j) {
-    return j >= fluid || wet_[j < ps.wall_end() ? j : ps.ghost_source(j)];
-  };
+  if (scan) {
+    find_wet_walls(walls_in_reach_);
+    // A ghost is wet or dry with its wall particle. Serial: a copy each, not worth a region.
+    for (std::int64_t g = ps.wall_end(); g < fluid; ++g) fills_[g] = fills_[ps.ghost_source(g)];
+  }
+  const std::int32_t* filling = fills_.data();
+  const auto fills = [filling](std::int32_t j) { return filling[j] != 0; };
   parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
     const bool on_surface = scan ? scan_.is_surface(i, neighbours_.of(i), t.x.data(), t.y.data(),
                                                     summed_n(i), {grad_x_[i], grad_y_[i]}, fills)
@@ -623,8 +629,8 @@ void Simulation::find_wet_walls(const std::vector<std::int32_t>& walls) {
   const std::int64_t fluid = ps.fluid_begin();
   parallel_for(0, static_cast<std::int64_t>(walls.size()), [&](std::int64_t k) {
     const std::int32_t w = walls[static_cast<std::size_t>(k)];
-    wet_[w] = !scan_.is_dry(w, neighbours_.of(w), t.x.data(), t.y.data(), t.n[w],
-                            {grad_x_[w], grad_y_[w]}, [&](std::int32_t j) { return j >= fluid; });
+    fills_[w] = !scan_.is_dry(w, neighbours_.of(w), t.x.data(), t.y.data(), t.n[w],
+                              {grad_x_[w], grad_y_[w]}, [&](std::int32_t j) { return j >= fluid; });
   });
 }
 

@@ -224,8 +224,11 @@ class Simulation {
   // (set_band_excess), and the step's stamp (find_surface_band).
   std::vector<std::uint32_t> band_reach_;
   std::uint32_t band_stamp_ = 0;
-  std::vector<std::uint8_t> wet_;  // wall particles with water in front of them (surface scan)
-  std::vector<double> cap_;        // surface particles' pressure caps (surface_pressure_cap)
+  // What fills a fluid particle's scan region (surface scan): every fluid particle, and the wall
+  // particles with water in front of them and their ghosts. An int32 per particle: the scan reads
+  // it in its vectorised loop, where a byte would be loaded lane by lane (no byte gather).
+  std::vector<std::int32_t> fills_;
+  std::vector<double> cap_;  // surface particles' pressure caps (surface_pressure_cap)
 
   double time_ = 0.0;
   std::int64_t steps_ = 0;

@@ -341,6 +341,40 @@ TEST(FreeSurfaceScan, AnExpandedInteriorIsNotASurface) {
   EXPECT_EQ(middle_scan, 0);
 }
 
+TEST(FreeSurfaceScan, TheRegionHoldsTheConeAndTheDiscAndOnlyWhatFillsIt) {
+  // The vectorised test (one selected signed distance per pair, every pair's fills read)
+  // against Marrone et al.'s region written out with vectors, one neighbour at a time: points
+  // all over the list's reach, random directions, and one neighbour in three not filling.
+  const double h = 0.5 * kRe;
+  const FreeSurface_Marrone2010 scan{0.97, lattice().n0, h};
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> coord(-1.2 * kRe, 1.2 * kRe),
+      angle(0.0, 6.283185307179586);
+  const double x[2] = {0.3, 0.0}, y[2] = {0.2, 0.0};
+  std::vector<double> xs(x, x + 2), ys(y, y + 2);
+  const std::int32_t one[1] = {1};
+  int in_region = 0, blocked = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double a = angle(gen);
+    const Vec2 nu{std::cos(a), std::sin(a)}, tau{-nu.y, nu.x};
+    const Vec2 ri{xs[0], ys[0]}, rj{xs[0] + coord(gen), ys[0] + coord(gen)};
+    xs[1] = rj.x;
+    ys[1] = rj.y;
+    const Vec2 d = rj - ri, t = ri + nu * h, dt = rj - t;
+    const bool in = dot(d, d) >= 2.0 * h * h ? dot(dt, dt) < h * h
+                                             : std::abs(dot(nu, dt)) + std::abs(dot(tau, dt)) < h;
+    const bool fills = k % 3 != 0;
+    const bool empty = scan.region_empty(0, IdRange{one, one + 1}, xs.data(), ys.data(), nu,
+                                         [&](std::int32_t) { return fills; });
+    EXPECT_EQ(empty, !(in && fills)) << "point " << k << " at " << d.x << ", " << d.y;
+    in_region += in;
+    blocked += in && fills;
+  }
+  // The draw covers both sides of the test.
+  EXPECT_GT(in_region, 1000);
+  EXPECT_GT(blocked, 500);
+}
+
 TEST(FreeSurfaceScan, ALoneParticleAndAThreadAreSurface) {
   Cloud c;
   c.add(0.5, 0.5);                                   // alone
