@@ -71,9 +71,10 @@ struct FreeSurface_Marrone2010 {
   ///
   /// The whole list is tested without a branch, so that the loop vectorises (both sides of the
   /// cone-or-disc test computed and selected; fills read for every pair: give it a plain array's
-  /// load). A scalar loop that stops at the first filling particle spent most of its time on
-  /// mispredicted branches, and stopping after each chunk of 16 pairs left the chunks' scalar
-  /// remainders to dominate (both measured in docs/performance.md).
+  /// load; it is taken by value, as GCC 12 does not vectorise the loop through a reference to
+  /// the caller's lambda). A scalar loop that stops at the first filling particle spent most of
+  /// its time on mispredicted branches, and stopping after each chunk of 16 pairs left the
+  /// chunks' scalar remainders to dominate (both measured in docs/performance.md).
   template <class Fills>
   bool region_empty(std::int64_t i, IdRange nb, const double* x, const double* y, Vec2 nu,
                     Fills fills) const {
