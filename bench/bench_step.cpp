@@ -25,13 +25,19 @@
 //   there is twice as fast as in a run.
 //
 // Each iteration is one Simulation::step() (for NeighbourBuild one binning and build); the scene
-// is built and 20 steps are taken before timing. Run:
+// is built and 20 steps are taken before timing. Every step benchmark also reports
+// cycles_per_particle_step: wall time x the clock Google Benchmark reads (its "Run on ... MHz"
+// line) over particle-steps, a figure that carries between machines better than seconds; the
+// report's context names the CPU model and the vector instructions the build uses (times are
+// only comparable on one machine). Run:
 //   build/bin/bench_step --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/bench_step --benchmark_filter='DamBreak/2000/'   (one size)
 // The smoke test (ctest -R bench.step_smoke) runs the coarsest dam break for a few steps.
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <random>
@@ -84,11 +90,18 @@ void step(benchmark::State& state, const char* case_dir, Scheme scheme = Scheme:
   auto& base = warmed[{case_dir, dl, scheme, start_time}];
   if (!base) base = make(case_dir, dl, scheme, start_time);
   const auto sim = std::make_unique<Simulation>(*base);
+  const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) sim->step(100.0);
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
   const auto particles = static_cast<double>(sim->particles().size());
   state.counters["particles"] = particles;
   state.counters["particle_steps_per_s"] = benchmark::Counter(
       particles * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  // Wall seconds per particle-step times cycles per second (the loop's own clock: the same wall
+  // time as UseRealTime's, without its unit in the report).
+  state.counters["cycles_per_particle_step"] =
+      wall.count() * benchmark::CPUInfo::Get().cycles_per_second /
+      (particles * static_cast<double>(state.iterations()));
 }
 
 void DamBreak(benchmark::State& state) {
@@ -209,6 +222,40 @@ BENCHMARK(NeighbourBuild)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+/// The CPU's model name (/proc/cpuinfo; "unknown" where there is none).
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  }
+  return "unknown";
+}
+
+/// The widest vector instructions the build was compiled for (CMake's WCMPS_SIMD).
+const char* simd_level() {
+#if defined(__AVX512F__)
+  return "AVX-512 (256-bit vectors preferred)";
+#elif defined(__AVX2__)
+  return "AVX2 + FMA";
+#elif defined(__SSE2__)
+  return "SSE2";
+#else
+  return "scalar";
+#endif
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::AddCustomContext("cpu_model", cpu_model());
+  benchmark::AddCustomContext("simd", simd_level());
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
