@@ -36,9 +36,10 @@ struct MemoryEstimate {
   /// is 4 B x kListGrowth x 44 (re = 3.5 DL, skin 0.2 DL) = 225 B; the rest is
   /// kBytesPerParticle. The stabilised step's per-particle arrays added since (the band's
   /// correctors and marks, the cap's memory, ...) raised the slope between case I at DL 5 and
-  /// 2 mm from 578 to 619 B per particle (2026-12-05): 305 + 41 B.
+  /// 2 mm from 578 to 619 B per particle (2026-12-05): 305 + 41 B; the surface scan's four
+  /// witnesses (2026-12-06) add 16 B.
   static constexpr double kRunOverheadBytes = 9.4e6;
-  static constexpr double kBytesPerParticle = 346.0;
+  static constexpr double kBytesPerParticle = 362.0;
   /// heaptrack on case I: the list took 11.25 MB for 50,084 owners x 44 lattice neighbours x 4 B
   /// = 8.8 MB.
   static constexpr double kListGrowth = 1.28;

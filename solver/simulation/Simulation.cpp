@@ -11,6 +11,8 @@ namespace {
 
 constexpr int kDimension = 2;
 
+constexpr std::size_t kWitnesses = FreeSurface_Marrone2010::kWitnesses;
+
 inline double sq(double v) {
   return v * v;
 }
@@ -136,6 +138,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) {
     fills_.assign(static_cast<std::size_t>(ps.size()), 0);
     std::fill(fills_.begin() + ps.fluid_begin(), fills_.end(), 1);
+    scan_witness_.assign(static_cast<std::size_t>(ps.size()) * kWitnesses, 0);
   }
   if (shifting_scheme_ != ShiftingScheme::None || tensile_switch_ ||
       renormalisation_ != GradientRenormalisation::None || band_rate_) {
@@ -578,9 +581,11 @@ void Simulation::compute_pressure(double dt) {
   const std::int32_t* filling = fills_.data();
   const auto fills = [filling](std::int32_t j) { return filling[j] != 0; };
   parallel_for(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
-    const bool on_surface = scan ? scan_.is_surface(i, neighbours_.of(i), t.x.data(), t.y.data(),
-                                                    summed_n(i), {grad_x_[i], grad_y_[i]}, fills)
-                                 : surface_.is_surface(summed_n(i));
+    const bool on_surface =
+        scan ? scan_.is_surface(i, neighbours_.of(i), t.x.data(), t.y.data(), summed_n(i),
+                                {grad_x_[i], grad_y_[i]}, fills,
+                                &scan_witness_[static_cast<std::size_t>(i) * kWitnesses])
+             : surface_.is_surface(summed_n(i));
     t.surface[i] = on_surface ? 1 : 0;
   });
   // The band of this step's surface (the tensile switch, the shifting), and in it the evolved

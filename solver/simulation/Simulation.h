@@ -228,6 +228,10 @@ class Simulation {
   // particles with water in front of them and their ghosts. An int32 per particle: the scan reads
   // it in its vectorised loop, where a byte would be loaded lane by lane (no byte gather).
   std::vector<std::int32_t> fills_;
+  // Of each particle under the surface scan, kWitnesses slots: particles that filled its regions
+  // at the last scan (FreeSurface_Marrone2010::is_surface). Hints only: any index is valid, so
+  // neither a reorder nor a restart needs to keep them.
+  std::vector<std::int32_t> scan_witness_;
   std::vector<double> cap_;  // surface particles' pressure caps (surface_pressure_cap)
 
   double time_ = 0.0;

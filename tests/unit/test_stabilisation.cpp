@@ -375,6 +375,51 @@ TEST(FreeSurfaceScan, TheRegionHoldsTheConeAndTheDiscAndOnlyWhatFillsIt) {
   EXPECT_GT(blocked, 500);
 }
 
+TEST(FreeSurfaceScan, WitnessesGiveTheScansAnswerWithAFractionOfItsPairs) {
+  // A jittered block (candidates along a normal and, where G is small, along the four axes), its
+  // particles then moved a little as in a step: the flags with witnesses (random indices at
+  // first, the last scan's fillers then) are the flags of the scan alone, and in the second
+  // pass the witnesses spare most of the pair tests of the candidates inside the water (each
+  // test reads fills once; a surface particle's empty region is scanned whole either way).
+  const FreeSurface_Marrone2010 scan{0.97, lattice().n0, 0.5 * kRe};
+  constexpr int kSlots = FreeSurface_Marrone2010::kWitnesses;
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    Cloud c = block(30, 20, 0.2, seed);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<std::int32_t> any(0, static_cast<std::int32_t>(c.size() - 1));
+    std::vector<std::int32_t> witness(static_cast<std::size_t>(c.size()) * kSlots);
+    for (auto& w : witness) w = any(rng);
+    std::uniform_real_distribution<double> nudge(-0.01 * kDl, 0.01 * kDl);
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1) {  // a step's move, within the lists' skin
+        for (std::int64_t k = 0; k < c.size(); ++k) c.x[k] += nudge(rng), c.y[k] += nudge(rng);
+      }
+      long reads = 0, reads_witnessed = 0, inside = 0, inside_witnessed = 0;
+      int surface = 0;
+      for (std::int64_t i = 0; i < c.size(); ++i) {
+        const DensitySums d = summed(c, i, false);
+        const long before = reads, before_witnessed = reads_witnessed;
+        const bool plain = scan.is_surface(i, c.list.of(i), c.x.data(), c.y.data(), d.n, d.gradient,
+                                           [&](std::int32_t) { return ++reads > 0; });
+        const bool with = scan.is_surface(
+            i, c.list.of(i), c.x.data(), c.y.data(), d.n, d.gradient,
+            [&](std::int32_t) { return ++reads_witnessed > 0; }, &witness[i * kSlots]);
+        ASSERT_EQ(with, plain) << "seed " << seed << ", pass " << pass << ", particle " << i;
+        surface += plain;
+        if (!plain) {
+          inside += reads - before;
+          inside_witnessed += reads_witnessed - before_witnessed;
+        }
+      }
+      EXPECT_GT(surface, 0);
+      if (pass == 1) {
+        EXPECT_GT(inside, 500) << seed;  // candidates inside the water, scanned
+        EXPECT_LT(inside_witnessed * 5, inside) << seed;
+      }
+    }
+  }
+}
+
 TEST(FreeSurfaceScan, ALoneParticleAndAThreadAreSurface) {
   Cloud c;
   c.add(0.5, 0.5);                                   // alone
