@@ -115,7 +115,11 @@ struct DensityRate_Randles1996 {
   static Sums sums(const Kernel& w, std::int64_t i, IdRange nb, const double* x, const double* y,
                    const double* u, const double* v, std::int64_t fluid_begin) {
     // Without a branch, so that the loop vectorises (the note of MpsOperators.h): pairs at
-    // r >= re have W' = 0, and a particle on top of i (r = 0: no direction) is selected out.
+    // r >= re have W' = 0, and a particle on top of i (r = 0: no direction) adds zero to every
+    // sum, each being c times dx or dy. Its c is kept finite by dividing by 1 instead of r, not
+    // selected: with the division inside the select GCC 12 put the loads of u and v under its
+    // mask, which it cannot vectorise ("unsupported masked emulated gather"), and the loop ran
+    // scalar.
     const Kernel k = w;
     const double re2 = k.re * k.re;
     const double xi = x[i], yi = y[i], ui = u[i], vi = v[i];
@@ -129,7 +133,7 @@ struct DensityRate_Randles1996 {
       const double r2 = dx * dx + dy * dy;
       const double r = std::sqrt(r2);
       const bool paired = r2 > 0.0;
-      const double c = paired ? k.derivative(r) / r : 0.0;
+      const double c = k.derivative(r) / (paired ? r : 1.0);
       const double du = u[j] - ui, dv = v[j] - vi;
       boundary += (paired && r2 < re2 && j < fluid_begin) ? 1.0 : 0.0;
       bxu += c * dx * du;
