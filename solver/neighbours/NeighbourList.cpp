@@ -1,9 +1,17 @@
 #include "neighbours/NeighbourList.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/Parallel.h"
+
+#if defined(__AVX512F__) && defined(__AVX512VL__) && defined(__FMA__)
+#include <immintrin.h>
+#define WCMPS_LISTS_AVX512 1
+#else
+#define WCMPS_LISTS_AVX512 0
+#endif
 
 namespace wcmps {
 namespace {
@@ -40,36 +48,97 @@ Block block_of(const CellGrid& g, double xi, double yi) {
   return b;
 }
 
+/// Whether a candidate at (dx, dy) from the particle is within the cutoff. The count and the
+/// fill must agree to the bit (the fill writes where the count's prefix sum says), so both take
+/// this test, and the vector path below rounds it the same way: dy^2, then dx dx + that in one
+/// fused multiply-add (which is also what GCC 12 made of dx * dx + dy * dy here before).
+inline bool within(double dx, double dy, double cutoff2) {
+#if WCMPS_LISTS_AVX512
+  return std::fma(dx, dx, dy * dy) < cutoff2;
+#else
+  return dx * dx + dy * dy < cutoff2;
+#endif
+}
+
+#if WCMPS_LISTS_AVX512
+/// Candidates k .. k + 7 of the grid's slots: which are within the cutoff of (xi, yi) and not
+/// particle i itself, as a mask of 8 bits, and their ids.
+struct Eight {
+  __m256d xi, yi, cutoff2;
+  __m256i self;
+
+  Eight(const Block& b, double c2, std::int64_t i)
+      : xi(_mm256_set1_pd(b.xi)),
+        yi(_mm256_set1_pd(b.yi)),
+        cutoff2(_mm256_set1_pd(c2)),
+        self(_mm256_set1_epi32(static_cast<std::int32_t>(i))) {}
+
+  __mmask8 in(const double* xs, const double* ys, std::int32_t k) const {
+    return half(xs + k, ys + k) | static_cast<__mmask8>(half(xs + k + 4, ys + k + 4) << 4);
+  }
+  __mmask8 half(const double* xs, const double* ys) const {
+    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(xs), xi);
+    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(ys), yi);
+    return _mm256_cmp_pd_mask(_mm256_fmadd_pd(dx, dx, _mm256_mul_pd(dy, dy)), cutoff2, _CMP_LT_OQ);
+  }
+};
+#endif
+
 /// Number of particles within `cutoff` of (xi, yi), i itself included. Branch-free over
-/// contiguous coordinates, so the loop vectorises.
+/// contiguous coordinates, so the loop vectorises (with AVX-512, eight candidates per mask).
 std::int64_t count_within(const CellGrid& g, const Block& b, double cutoff2) {
   const double* xs = g.xs();
   const double* ys = g.ys();
   std::int64_t c = 0;
+#if WCMPS_LISTS_AVX512
+  const Eight eight(b, cutoff2, -1);
+#endif
   for (int r = 0; r <= b.y1 - b.y0; ++r) {
+    std::int32_t k = b.first[r];
+#if WCMPS_LISTS_AVX512
+    for (; k + 8 <= b.last[r]; k += 8) c += __builtin_popcount(eight.in(xs, ys, k));
+#endif
 #pragma omp simd reduction(+ : c)
-    for (std::int32_t k = b.first[r]; k < b.last[r]; ++k) {
-      const double dx = xs[k] - b.xi, dy = ys[k] - b.yi;
-      c += dx * dx + dy * dy < cutoff2 ? 1 : 0;
+    for (std::int32_t kk = k; kk < b.last[r]; ++kk) {
+      c += within(xs[kk] - b.xi, ys[kk] - b.yi, cutoff2) ? 1 : 0;
     }
   }
   return c;
 }
 
 /// Writes the particles other than i within `cutoff` of particle i to out (which has room for
-/// b.candidates() entries: candidate k is written at out[c] with c <= k) and returns their
-/// number.
+/// b.candidates() entries: candidate k is written at out[c] with c <= k; the vector path's store
+/// of the eight ids of candidates k .. k + 7 ends at out[c + 7], c + 7 <= k + 7) and returns
+/// their number.
+///
+/// Without AVX-512 each candidate is written and the end moved on by the test's outcome. With
+/// it, eight candidates are tested at once and the ids of those in are compressed to the front
+/// of a register (vpcompressd into a register: its form with a memory operand is microcoded and
+/// slow on AMD Zen 4), stored whole, and the end moved on by their number; the list is the same,
+/// in the same order.
 std::int64_t fill_within(const CellGrid& g, const Block& b, double cutoff2, std::int64_t i,
                          std::int32_t* out) {
   const double* xs = g.xs();
   const double* ys = g.ys();
   const std::int32_t* members = g.members().data();
   std::int64_t c = 0;
+#if WCMPS_LISTS_AVX512
+  const Eight eight(b, cutoff2, i);
+#endif
   for (int r = 0; r <= b.y1 - b.y0; ++r) {
-    for (std::int32_t k = b.first[r]; k < b.last[r]; ++k) {
-      const double dx = xs[k] - b.xi, dy = ys[k] - b.yi;
+    std::int32_t k = b.first[r];
+#if WCMPS_LISTS_AVX512
+    for (; k + 8 <= b.last[r]; k += 8) {
+      const __m256i id = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(members + k));
+      const __mmask8 m = eight.in(xs, ys, k) & _mm256_cmpneq_epi32_mask(id, eight.self);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + c), _mm256_maskz_compress_epi32(m, id));
+      c += __builtin_popcount(m);
+    }
+#endif
+    for (; k < b.last[r]; ++k) {
       out[c] = members[k];
-      c += static_cast<std::int64_t>(dx * dx + dy * dy < cutoff2) & (members[k] != i);
+      c += static_cast<std::int64_t>(within(xs[k] - b.xi, ys[k] - b.yi, cutoff2)) &
+           (members[k] != i);
     }
   }
   return c;
@@ -83,8 +152,7 @@ void fill_within_branching(const CellGrid& g, const Block& b, double cutoff2, st
   const std::int32_t* members = g.members().data();
   for (int r = 0; r <= b.y1 - b.y0; ++r) {
     for (std::int32_t k = b.first[r]; k < b.last[r]; ++k) {
-      const double dx = xs[k] - b.xi, dy = ys[k] - b.yi;
-      if (dx * dx + dy * dy < cutoff2 && members[k] != i) *out++ = members[k];
+      if (within(xs[k] - b.xi, ys[k] - b.yi, cutoff2) && members[k] != i) *out++ = members[k];
     }
   }
 }
