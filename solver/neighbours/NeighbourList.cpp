@@ -145,8 +145,9 @@ std::int64_t fill_within(const CellGrid& g, const Block& b, double cutoff2, std:
 }
 
 /// The same with a branch per candidate, writing nothing past the last neighbour.
-void fill_within_branching(const CellGrid& g, const Block& b, double cutoff2, std::int64_t i,
-                           std::int32_t* out) {
+std::int64_t fill_within_branching(const CellGrid& g, const Block& b, double cutoff2,
+                                   std::int64_t i, std::int32_t* out) {
+  std::int32_t* const first = out;
   const double* xs = g.xs();
   const double* ys = g.ys();
   const std::int32_t* members = g.members().data();
@@ -155,7 +156,47 @@ void fill_within_branching(const CellGrid& g, const Block& b, double cutoff2, st
       if (within(xs[k] - b.xi, ys[k] - b.yi, cutoff2) && members[k] != i) *out++ = members[k];
     }
   }
+  return out - first;
 }
+
+/// The least spare room of ids_ beyond `pairs` for a build in one pass over `shares` shares: a
+/// share's room must hold a particle's candidates (about 123 at re + skin = 3.7 DL; see
+/// kFillBuffer) at the end of its run. At least 1/64 of the pairs and 512 ids per share.
+std::int64_t least_spare(std::int64_t pairs, std::int64_t shares) {
+  return pairs / 64 + 512 * shares;
+}
+
+/// The owned particles in index order, as positions 0 .. size() - 1 across the owner ranges.
+class Owned {
+ public:
+  explicit Owned(const std::vector<IndexRange>& owners) : owners_(owners) {
+    for (const auto& [b, e] : owners) size_ += e - b;
+  }
+  std::int64_t size() const { return size_; }
+  /// Calls f(i) for the particles at positions [p0, p1), in order.
+  template <class F>
+  void each(std::int64_t p0, std::int64_t p1, F&& f) const {
+    std::int64_t at = 0;
+    for (const auto& [b, e] : owners_) {
+      const std::int64_t lo = std::max(p0 - at, std::int64_t{0});
+      const std::int64_t hi = std::min(p1 - at, e - b);
+      for (std::int64_t k = lo; k < hi; ++k) f(b + k);
+      at += e - b;
+    }
+  }
+  /// The particle at position p (< size()).
+  std::int64_t at(std::int64_t p) const {
+    for (const auto& [b, e] : owners_) {
+      if (p < e - b) return b + p;
+      p -= e - b;
+    }
+    return -1;
+  }
+
+ private:
+  const std::vector<IndexRange>& owners_;
+  std::int64_t size_ = 0;
+};
 
 }  // namespace
 
@@ -166,6 +207,93 @@ void NeighbourList::build(const CellGrid& grid, const double* x, const double* y
   }
   cutoff_ = cutoff;
   const double c2 = cutoff * cutoff;
+  const Owned owned(owners);
+  const auto shares = static_cast<std::int64_t>(thread_count());
+  last_build_passes_ = 1;
+  if (!fill_in_one_pass(grid, x, y, n, c2, owners)) {
+    count_then_fill(grid, x, y, n, c2, owners);
+    last_build_passes_ = 2;
+  }
+  // What each thread's share of the owners holds, for the next build's room.
+  share_pairs_.assign(static_cast<std::size_t>(shares), 0);
+  for (std::int64_t t = 0; t < shares; ++t) {
+    const std::int64_t p0 = owned.size() * t / shares, p1 = owned.size() * (t + 1) / shares;
+    if (p1 > p0) {
+      share_pairs_[static_cast<std::size_t>(t)] =
+          offsets_[owned.at(p1 - 1) + 1] - offsets_[owned.at(p0)];
+    }
+  }
+}
+
+bool NeighbourList::fill_in_one_pass(const CellGrid& grid, const double* x, const double* y,
+                                     std::int64_t n, double c2,
+                                     const std::vector<IndexRange>& owners) {
+  // One pass instead of a count and a fill. Each thread fills the lists of its share of the
+  // owners (a contiguous run of them) into its own region of ids_: the ids its share held at
+  // the last build plus ids_'s spare room (count_then_fill leaves an eighth) dealt out in
+  // proportion to them. Then the regions are moved down to where the counts' prefix sum puts
+  // them. Every region starts at or after its final place (each region before it holds no more
+  // than its room), so moving them in order never overwrites one still to move. Too little spare
+  // room, a share that would outgrow its room, the first build, or a new thread count: the count
+  // and the fill (count_then_fill), which sizes ids_. The lists are those of the two passes, in
+  // the same order, and ids_ is never grown here (growing a vector by a little doubles its
+  // capacity).
+  const auto shares = static_cast<std::int64_t>(thread_count());
+  if (static_cast<std::int64_t>(share_pairs_.size()) != shares) return false;
+  const Owned owned(owners);
+  std::int64_t held = 0;
+  for (const std::int64_t h : share_pairs_) held += h;
+  const auto space = static_cast<std::int64_t>(ids_.size());
+  if (held == 0 || space - held < least_spare(held, shares)) return false;
+  std::vector<std::int64_t> room(static_cast<std::size_t>(shares + 1), 0);
+  for (std::int64_t t = 0; t < shares; ++t) {
+    const std::int64_t h = share_pairs_[static_cast<std::size_t>(t)];
+    room[static_cast<std::size_t>(t + 1)] =
+        room[static_cast<std::size_t>(t)] + h + (space - held) * h / held;
+  }
+  room.back() = space;
+  offsets_.assign(n + 1, 0);
+  std::vector<std::int64_t> filled(static_cast<std::size_t>(shares), 0);
+  std::vector<char> outgrown(static_cast<std::size_t>(shares), 0);
+  parallel_for(0, shares, [&](std::int64_t t) {
+    const auto ts = static_cast<std::size_t>(t);
+    std::int64_t end = room[ts];
+    const std::int64_t limit = room[ts + 1];
+    bool fits = true;
+    owned.each(owned.size() * t / shares, owned.size() * (t + 1) / shares, [&](std::int64_t i) {
+      if (!fits) return;
+      const Block blk = block_of(grid, x[i], y[i]);
+      // The fill writes up to its candidates' number of ids (see fill_within).
+      if (blk.candidates() > limit - end) {
+        fits = false;
+        return;
+      }
+      std::int32_t* list = ids_.data() + end;
+      const std::int64_t count = blk.candidates() <= kFillBuffer
+                                     ? fill_within(grid, blk, c2, i, list)
+                                     : fill_within_branching(grid, blk, c2, i, list);
+      offsets_[i + 1] = count;
+      end += count;
+    });
+    filled[ts] = end - room[ts];
+    outgrown[ts] = fits ? 0 : 1;
+  });
+  if (std::find(outgrown.begin(), outgrown.end(), 1) != outgrown.end()) return false;
+  for (std::int64_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
+  for (std::int64_t t = 1; t < shares; ++t) {
+    const auto ts = static_cast<std::size_t>(t);
+    const std::int64_t p0 = owned.size() * t / shares;
+    if (filled[ts] == 0) continue;
+    const std::int32_t* from = ids_.data() + room[ts];
+    std::int32_t* to = ids_.data() + offsets_[owned.at(p0)];
+    if (to != from) std::copy(from, from + filled[ts], to);  // to < from: a forward copy is safe
+  }
+  return true;
+}
+
+void NeighbourList::count_then_fill(const CellGrid& grid, const double* x, const double* y,
+                                    std::int64_t n, double c2,
+                                    const std::vector<IndexRange>& owners) {
   offsets_.assign(n + 1, 0);
   // Pass 1: count. offsets_[i + 1] holds the count of i until the prefix sum. Particle i is
   // binned, so it is among the particles within the cutoff of itself: minus one.
@@ -175,8 +303,10 @@ void NeighbourList::build(const CellGrid& grid, const double* x, const double* y
     });
   }
   for (std::int64_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
-  if (static_cast<std::int64_t>(ids_.size()) < offsets_[n]) {
-    ids_.resize(static_cast<std::size_t>(offsets_[n] + offsets_[n] / 8));
+  // Room for the lists and an eighth more, so that the next builds can take one pass.
+  const std::int64_t pairs = offsets_[n], shares = thread_count();
+  if (static_cast<std::int64_t>(ids_.size()) < pairs + least_spare(pairs, shares)) {
+    ids_.resize(static_cast<std::size_t>(pairs + pairs / 8 + least_spare(0, shares)));
   }
   // Pass 2: fill, in cell order. In a flowing fluid whether a candidate is in is unpredictable,
   // so each is written and the end moved on by the test's outcome, without a branch (the build

@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "core/Parallel.h"
 #include "neighbours/CellGrid.h"
 #include "neighbours/NeighbourList.h"
 
@@ -26,15 +27,10 @@ std::vector<std::vector<std::int32_t>> brute_force(const std::vector<double>& x,
   return out;
 }
 
-void expect_equal_to_brute_force(const std::vector<double>& x, const std::vector<double>& y,
-                                 Vec2 lo, Vec2 hi, double cutoff, double cell,
-                                 const std::vector<IndexRange>& owners) {
+void expect_lists_equal_brute_force(const NeighbourList& list, const std::vector<double>& x,
+                                    const std::vector<double>& y, double cutoff,
+                                    const std::vector<IndexRange>& owners) {
   const auto n = static_cast<std::int64_t>(x.size());
-  CellGrid grid;
-  grid.configure(lo, hi, cell);
-  grid.bin(x.data(), y.data(), n);
-  NeighbourList list;
-  list.build(grid, x.data(), y.data(), n, cutoff, owners);
   const auto ref = brute_force(x, y, cutoff);
   std::int64_t total = 0;
   for (std::int64_t i = 0; i < n; ++i) {
@@ -50,6 +46,18 @@ void expect_equal_to_brute_force(const std::vector<double>& x, const std::vector
     }
   }
   EXPECT_EQ(list.pair_count(), total);
+}
+
+void expect_equal_to_brute_force(const std::vector<double>& x, const std::vector<double>& y,
+                                 Vec2 lo, Vec2 hi, double cutoff, double cell,
+                                 const std::vector<IndexRange>& owners) {
+  const auto n = static_cast<std::int64_t>(x.size());
+  CellGrid grid;
+  grid.configure(lo, hi, cell);
+  grid.bin(x.data(), y.data(), n);
+  NeighbourList list;
+  list.build(grid, x.data(), y.data(), n, cutoff, owners);
+  expect_lists_equal_brute_force(list, x, y, cutoff, owners);
 }
 
 TEST(NeighbourList, RandomParticlesMatchBruteForce) {
@@ -110,6 +118,56 @@ TEST(NeighbourList, CrowdedCellsMatchBruteForce) {
     y.push_back(u(rng));
   }
   expect_equal_to_brute_force(x, y, {0, 0}, {1, 1}, 0.05, 0.05, {{0, 1200}});
+}
+
+TEST(NeighbourList, RebuildsInOnePassMatchBruteForce) {
+  // After the first build the lists are filled in one pass, each thread's share of the owners
+  // into room placed from the last build's shares; a share that outgrows its room (the particles
+  // crowded together) or a new thread count goes back to the count and the fill. Every build
+  // equals brute force, on 1 to 3 threads, with two owner ranges and particles owning no list.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0), jitter(-0.004, 0.004);
+  std::vector<double> x(2500), y(2500);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    x[k] = u(rng);
+    y[k] = 0.6 * u(rng);
+  }
+  const std::vector<IndexRange> owners{{0, 700}, {1100, 2500}};
+  const double cutoff = 0.035;
+  CellGrid grid;
+  grid.configure({0, 0}, {1, 0.6}, cutoff);
+  NeighbourList list;
+  const auto build = [&] {
+    grid.bin(x.data(), y.data(), static_cast<std::int64_t>(x.size()));
+    list.build(grid, x.data(), y.data(), static_cast<std::int64_t>(x.size()), cutoff, owners);
+    expect_lists_equal_brute_force(list, x, y, cutoff, owners);
+  };
+  const auto jiggle = [&] {
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      x[k] = std::clamp(x[k] + jitter(rng), 0.0, 1.0);
+      y[k] = std::clamp(y[k] + jitter(rng), 0.0, 0.6);
+    }
+  };
+  const int threads = thread_count();
+  for (const int t : {2, 1, 3}) {
+    set_thread_count(t);
+    build();
+    EXPECT_EQ(list.last_build_passes(), 2) << t << " threads, a new thread count";
+    for (int k = 0; k < 3; ++k) {
+      jiggle();
+      build();
+      EXPECT_EQ(list.last_build_passes(), 1) << t << " threads, build " << k;
+    }
+  }
+  // The owners of the first range crowded into a tenth of the width: several times their pairs,
+  // more than the room of the first share.
+  for (std::size_t k = 0; k < 700; ++k) x[k] *= 0.1;
+  build();
+  EXPECT_EQ(list.last_build_passes(), 2) << "a share outgrew its room";
+  jiggle();
+  build();
+  EXPECT_EQ(list.last_build_passes(), 1) << "room from the crowded build";
+  set_thread_count(threads);
 }
 
 TEST(CellGrid, BinsEveryParticleOnceInCellOrder) {
