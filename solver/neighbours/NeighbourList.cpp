@@ -207,21 +207,10 @@ void NeighbourList::build(const CellGrid& grid, const double* x, const double* y
   }
   cutoff_ = cutoff;
   const double c2 = cutoff * cutoff;
-  const Owned owned(owners);
-  const auto shares = static_cast<std::int64_t>(thread_count());
   last_build_passes_ = 1;
   if (!fill_in_one_pass(grid, x, y, n, c2, owners)) {
     count_then_fill(grid, x, y, n, c2, owners);
     last_build_passes_ = 2;
-  }
-  // What each thread's share of the owners holds, for the next build's room.
-  share_pairs_.assign(static_cast<std::size_t>(shares), 0);
-  for (std::int64_t t = 0; t < shares; ++t) {
-    const std::int64_t p0 = owned.size() * t / shares, p1 = owned.size() * (t + 1) / shares;
-    if (p1 > p0) {
-      share_pairs_[static_cast<std::size_t>(t)] =
-          offsets_[owned.at(p1 - 1) + 1] - offsets_[owned.at(p0)];
-    }
   }
 }
 
@@ -230,26 +219,34 @@ bool NeighbourList::fill_in_one_pass(const CellGrid& grid, const double* x, cons
                                      const std::vector<IndexRange>& owners) {
   // One pass instead of a count and a fill. Each thread fills the lists of its share of the
   // owners (a contiguous run of them) into its own region of ids_: the ids its share held at
-  // the last build plus ids_'s spare room (count_then_fill leaves an eighth) dealt out in
-  // proportion to them. Then the regions are moved down to where the counts' prefix sum puts
-  // them. Every region starts at or after its final place (each region before it holds no more
-  // than its room), so moving them in order never overwrites one still to move. Too little spare
-  // room, a share that would outgrow its room, the first build, or a new thread count: the count
-  // and the fill (count_then_fill), which sizes ids_. The lists are those of the two passes, in
-  // the same order, and ids_ is never grown here (growing a vector by a little doubles its
-  // capacity).
+  // the last build (the offsets of that build tell) plus ids_'s spare room (count_then_fill
+  // leaves an eighth) dealt out in proportion to them. Then the regions are moved down to where the
+  // counts' prefix sum puts them. Every region starts at or after its final place (each region
+  // before it holds no more than its room), so moving them in order never overwrites one still to
+  // move. Too little spare room, a share that would outgrow its room, or no last build of as many
+  // particles: the count and the fill (count_then_fill), which sizes ids_. The lists are those of
+  // the two passes, in the same order, and ids_ is never grown here (growing a vector by a little
+  // doubles its capacity).
+  if (static_cast<std::int64_t>(offsets_.size()) != n + 1) return false;  // no last build of n
   const auto shares = static_cast<std::int64_t>(thread_count());
-  if (static_cast<std::int64_t>(share_pairs_.size()) != shares) return false;
   const Owned owned(owners);
-  std::int64_t held = 0;
-  for (const std::int64_t h : share_pairs_) held += h;
+  const auto first = [&](std::int64_t t) { return owned.size() * t / shares; };
+  // What each share held at the last build (its offsets are still there).
+  std::vector<std::int64_t> held(static_cast<std::size_t>(shares), 0);
+  for (std::int64_t t = 0; t < shares; ++t) {
+    if (first(t + 1) > first(t)) {
+      held[static_cast<std::size_t>(t)] =
+          offsets_[owned.at(first(t + 1) - 1) + 1] - offsets_[owned.at(first(t))];
+    }
+  }
+  const std::int64_t pairs = offsets_[n];
   const auto space = static_cast<std::int64_t>(ids_.size());
-  if (held == 0 || space - held < least_spare(held, shares)) return false;
+  if (pairs == 0 || space - pairs < least_spare(pairs, shares)) return false;
   std::vector<std::int64_t> room(static_cast<std::size_t>(shares + 1), 0);
   for (std::int64_t t = 0; t < shares; ++t) {
-    const std::int64_t h = share_pairs_[static_cast<std::size_t>(t)];
+    const std::int64_t h = held[static_cast<std::size_t>(t)];
     room[static_cast<std::size_t>(t + 1)] =
-        room[static_cast<std::size_t>(t)] + h + (space - held) * h / held;
+        room[static_cast<std::size_t>(t)] + h + (space - pairs) * h / pairs;
   }
   room.back() = space;
   offsets_.assign(n + 1, 0);
@@ -260,7 +257,7 @@ bool NeighbourList::fill_in_one_pass(const CellGrid& grid, const double* x, cons
     std::int64_t end = room[ts];
     const std::int64_t limit = room[ts + 1];
     bool fits = true;
-    owned.each(owned.size() * t / shares, owned.size() * (t + 1) / shares, [&](std::int64_t i) {
+    owned.each(first(t), first(t + 1), [&](std::int64_t i) {
       if (!fits) return;
       const Block blk = block_of(grid, x[i], y[i]);
       // The fill writes up to its candidates' number of ids (see fill_within).
@@ -282,10 +279,9 @@ bool NeighbourList::fill_in_one_pass(const CellGrid& grid, const double* x, cons
   for (std::int64_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
   for (std::int64_t t = 1; t < shares; ++t) {
     const auto ts = static_cast<std::size_t>(t);
-    const std::int64_t p0 = owned.size() * t / shares;
     if (filled[ts] == 0) continue;
     const std::int32_t* from = ids_.data() + room[ts];
-    std::int32_t* to = ids_.data() + offsets_[owned.at(p0)];
+    std::int32_t* to = ids_.data() + offsets_[owned.at(first(t))];
     if (to != from) std::copy(from, from + filled[ts], to);  // to < from: a forward copy is safe
   }
   return true;

@@ -45,8 +45,8 @@ class NeighbourList {
   std::int64_t pair_count() const { return offsets_.empty() ? 0 : offsets_.back(); }
   double cutoff() const { return cutoff_; }
   /// Passes over the candidates the last build took: 1 (the lists filled where the last build's
-  /// shares leave room) or 2 (counted, then filled: the first build, a new thread count, or a
-  /// share that outgrew its room).
+  /// lists leave room) or 2 (counted, then filled: the first build, another particle count, or
+  /// a thread's share that outgrew its room).
   int last_build_passes() const { return last_build_passes_; }
 
  private:
@@ -58,7 +58,6 @@ class NeighbourList {
   std::vector<std::int64_t> offsets_;
   std::vector<std::int32_t> ids_;
   double cutoff_ = 0.0;
-  std::vector<std::int64_t> share_pairs_;  ///< ids each thread's share of the owners held last
   int last_build_passes_ = 0;
 };
 
