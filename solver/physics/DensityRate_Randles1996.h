@@ -66,6 +66,7 @@
 #include "core/Vec2.h"
 #include "neighbours/NeighbourList.h"
 #include "operators/Kernel.h"
+#include "operators/PairRows.h"
 
 namespace wcmps {
 
@@ -155,6 +156,62 @@ struct DensityRate_Randles1996 {
     s.boundary = boundary > 0.0;
     return s;
   }
+
+#if WCMPS_PAIRS_AVX512
+  /// sums() from the prediction's rows of this step (operators/PairRows.h, the same r^n and u^n),
+  /// eight pairs per instruction; a list's last 1 to 7 pairs in one more vector whose spare
+  /// lanes lie 2 re away (W' = 0, and out of the boundary count). The same terms as sums(), which
+  /// it differs from by rounding only (the unit test `DensityRateAvx512.*`).
+  static Sums sums_avx512(const Kernel& k, std::int64_t i, IdRange nb, const PairRow* rows,
+                          std::int64_t fluid_begin) {
+    const double* me = rows[i].f;
+    const __m512d xi = _mm512_set1_pd(me[kRowX]), yi = _mm512_set1_pd(me[kRowY]);
+    const __m512d ui = _mm512_set1_pd(me[kRowU]), vi = _mm512_set1_pd(me[kRowV]);
+    const __m512d v_inv_re = _mm512_set1_pd(k.inv_re), re2 = _mm512_set1_pd(k.re * k.re);
+    const __m512d slope = _mm512_set1_pd(-3.0 * k.inv_re);  // W'(r) = -3 q^2 / re
+    const __m512d one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
+    const __m512d far = _mm512_set1_pd(2.0 * k.re);
+    const __m256i first_fluid = _mm256_set1_epi32(static_cast<std::int32_t>(fluid_begin));
+    __m512d bxu = zero, bxv = zero, byu = zero, byv = zero, pxx = zero, pxy = zero, pyy = zero;
+    bool boundary = false;
+    const std::int32_t* id = nb.first;
+    const std::int64_t size = nb.size();
+    for (std::int64_t m = 0; m < size; m += 8) {
+      const EightIds e(id + m, size - m, rows);
+      __m512d h[4];
+      transpose_half_rows(e, 0, h);
+      const __m512d dx = _mm512_mask_sub_pd(far, e.live, h[kRowX], xi);  // r_j - r_i
+      const __m512d dy = _mm512_maskz_sub_pd(e.live, h[kRowY], yi);
+      const __m512d r2 = _mm512_fmadd_pd(dx, dx, _mm512_mul_pd(dy, dy));
+      const __m512d r = _mm512_sqrt_pd(r2);
+      const __mmask8 paired = _mm512_cmp_pd_mask(r2, zero, _CMP_GT_OQ);
+      const __m512d qk = _mm512_max_pd(_mm512_fnmadd_pd(r, v_inv_re, one), zero);  // ramp
+      const __m512d c = _mm512_div_pd(_mm512_mul_pd(slope, _mm512_mul_pd(qk, qk)),
+                                      _mm512_mask_mov_pd(one, paired, r));
+      const __m512d du = _mm512_sub_pd(h[kRowU], ui), dv = _mm512_sub_pd(h[kRowV], vi);
+      const __mmask8 wall = _mm256_cmplt_epi32_mask(e.ids, first_fluid);
+      boundary |= (paired & wall & _mm512_cmp_pd_mask(r2, re2, _CMP_LT_OQ)) != 0;
+      const __m512d cx = _mm512_mul_pd(c, dx), cy = _mm512_mul_pd(c, dy);
+      bxu = _mm512_fmadd_pd(cx, du, bxu);
+      bxv = _mm512_fmadd_pd(cx, dv, bxv);
+      byu = _mm512_fmadd_pd(cy, du, byu);
+      byv = _mm512_fmadd_pd(cy, dv, byv);
+      pxx = _mm512_fnmadd_pd(cx, dx, pxx);
+      pxy = _mm512_fnmadd_pd(cx, dy, pxy);
+      pyy = _mm512_fnmadd_pd(cy, dy, pyy);
+    }
+    Sums s;
+    s.bxu = _mm512_reduce_add_pd(bxu);
+    s.bxv = _mm512_reduce_add_pd(bxv);
+    s.byu = _mm512_reduce_add_pd(byu);
+    s.byv = _mm512_reduce_add_pd(byv);
+    s.pxx = _mm512_reduce_add_pd(pxx);
+    s.pxy = _mm512_reduce_add_pd(pxy);
+    s.pyy = _mm512_reduce_add_pd(pyy);
+    s.boundary = boundary;
+    return s;
+  }
+#endif
 
   /// trace(L B): the rate under the corrector L.
   static double rate(const Sums& s, const Corrector& l) {

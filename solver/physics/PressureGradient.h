@@ -13,6 +13,7 @@
 #include "operators/MpsOperators.h"
 #include "physics/DensityRate_Randles1996.h"
 #include "physics/GradientRenormalisation_Khayyer2011.h"
+#include "physics/PressureGradientAvx512.h"
 
 namespace wcmps {
 
@@ -61,6 +62,8 @@ struct PressureGradient_Koshizuka1996 {
 template <bool kSwitch, GradientRenormalisation kRenormalisation = GradientRenormalisation::None>
 struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
+  /// Whether the AVX-512 pass applies (`rows`): the gradient not renormalised.
+  static constexpr bool kRows = kRenormalisation == GradientRenormalisation::None;
   /// With the switch: particles it leaves out (1), the free-surface region (Sun et al. 2018).
   const std::uint8_t* exempt = nullptr;
   /// With a renormalisation: the free-surface band (1) and the fluid with a boundary particle in
@@ -72,6 +75,9 @@ struct PressureGradient_Suzuki2007 {
   /// With density_rate = "randles1996": the band's correctors q (L - I), gathered by every
   /// fluid particle (DensityRate_Randles1996::gathered_gradient); unset (xx null) otherwise.
   DensityRate_Randles1996::Excess excess;
+  /// The rows of the AVX-512 pass (PressureGradientAvx512.h), packed for this step's r*, q and
+  /// correctors; null: the portable loops.
+  const PairRow* rows = nullptr;
 
   double own(const double* p_over_n2, std::int64_t i) const {
     if constexpr (kSwitch) {
@@ -103,6 +109,16 @@ struct PressureGradient_Suzuki2007 {
         }
       }
     }
+#if WCMPS_PAIRS_AVX512
+    if (rows) {
+      const Vec2 g = excess.reaches(i)
+                         ? variational_gradient_avx512<true>(ops.kernel(), i, part, rows,
+                                                             own(p_over_n2, i), excess.fluid_begin)
+                         : variational_gradient_avx512<false>(ops.kernel(), i, part, rows,
+                                                              own(p_over_n2, i), 0);
+      return g * (ops.gradient_correction() * ops.n0());
+    }
+#endif
     if (excess.reaches(i)) {
       const Vec2 g = DensityRate_Randles1996::gathered_gradient(
           ops.kernel(), i, part, x, y, p_over_n2, own(p_over_n2, i), excess);

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <string>
 
+#include "operators/PairRows.h"
 #include "scene/CaseSpec.h"
 #include "scene/SizeEstimate.h"
 
@@ -37,9 +38,10 @@ struct MemoryEstimate {
   /// kBytesPerParticle. The stabilised step's per-particle arrays added since (the band's
   /// correctors and marks, the cap's memory, ...) raised the slope between case I at DL 5 and
   /// 2 mm from 578 to 619 B per particle (2026-12-05): 305 + 41 B; the surface scan's four
-  /// witnesses (2026-12-06) add 16 B.
+  /// witnesses (2026-12-06) add 16 B, and an AVX-512 build's rows of the pair passes
+  /// (operators/PairRows.h, 2026-12-06) 64 B.
   static constexpr double kRunOverheadBytes = 9.4e6;
-  static constexpr double kBytesPerParticle = 362.0;
+  static constexpr double kBytesPerParticle = 362.0 + (WCMPS_PAIRS_AVX512 ? 64.0 : 0.0);
   /// heaptrack on case I: the list took 11.25 MB for 50,084 owners x 44 lattice neighbours x 4 B
   /// = 8.8 MB.
   static constexpr double kListGrowth = 1.28;

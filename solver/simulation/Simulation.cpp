@@ -507,9 +507,17 @@ void Simulation::predict(double dt) {
     return root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
       Vec2 a = gravity_;
       if constexpr (kPairs) {
-        const PredictionSums p = prediction_sums<kArtificial, kDensity, kShift>(
-            ops_.kernel(), i, neighbours_.of(i), s.x.data(), s.y.data(), s.u.data(), s.v.data(),
-            density);
+        const PredictionSums p = [&] {
+#if WCMPS_PAIRS_AVX512
+          if constexpr (kArtificial && kDensity) {
+            return prediction_sums_avx512<kShift>(ops_.kernel(), i, neighbours_.of(i),
+                                                  pair_rows_.data(), density);
+          }
+#endif
+          return prediction_sums<kArtificial, kDensity, kShift>(ops_.kernel(), i, neighbours_.of(i),
+                                                                s.x.data(), s.y.data(), s.u.data(),
+                                                                s.v.data(), density);
+        }();
         a += p.lap * lap_scale;
         if constexpr (kArtificial) a += p.q * q_scale;
         if constexpr (kDensity) {
@@ -530,6 +538,12 @@ void Simulation::predict(double dt) {
   using No = std::false_type;
   const bool artificial = artificial_viscosity_.alpha > 0.0;
   const bool follow = shift_in_continuity_;  // implies evolved
+  prediction_rows_ = WCMPS_PAIRS_AVX512 && artificial && evolved;
+  if (prediction_rows_) {
+    pack_prediction_rows(pair_rows_, ps.size(), s.x.data(), s.y.data(), s.u.data(), s.v.data(),
+                         s.n.data(), follow ? s.shift_u.data() : nullptr,
+                         follow ? s.shift_v.data() : nullptr);
+  }
   if (!viscous && !evolved) {
     star_drift_ = pass(No{}, No{}, No{}, No{});
   } else if (artificial) {
@@ -694,10 +708,20 @@ void Simulation::correct_band_rate(double dt) {
   const ParticleState& s = ps.now;
   ParticleState& t = ps.next;
   const std::int64_t fluid = ps.fluid_begin();
+  // The prediction's rows, where it packed them, hold the same r^n and u^n.
+  [[maybe_unused]] const PairRow* rows = pair_rows_.data();
   parallel_for(0, static_cast<std::int64_t>(band_.size()), [&](std::int64_t k) {
     const std::int32_t i = band_[static_cast<std::size_t>(k)];
+#if WCMPS_PAIRS_AVX512
+    const auto sums =
+        prediction_rows_
+            ? DensityRate_Randles1996::sums_avx512(ops_.kernel(), i, neighbours_.of(i), rows, fluid)
+            : DensityRate_Randles1996::sums(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
+                                            s.y.data(), s.u.data(), s.v.data(), fluid);
+#else
     const auto sums = DensityRate_Randles1996::sums(ops_.kernel(), i, neighbours_.of(i), s.x.data(),
                                                     s.y.data(), s.u.data(), s.v.data(), fluid);
+#endif
     const auto l = band_rate_rule_.corrector(sums, {s.n[i], t.n[i], dt});
     band_corrector_[i] = l;
     t.n[i] += dt * (DensityRate_Randles1996::rate(sums, l) - sums.summed());
@@ -816,6 +840,14 @@ void Simulation::correct(double dt) {
     const double* input = gradient_input<Scheme>();
     if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {
       if (band_rate_) set_band_excess(input);
+#if WCMPS_PAIRS_AVX512
+      if constexpr (Scheme::kRows) {
+        const auto& a = scheme.excess;
+        pack_gradient_rows(pair_rows_, ps.size(), t.x.data(), t.y.data(), input, a.xx, a.xy, a.yy);
+        scheme.rows = pair_rows_.data();
+        prediction_rows_ = false;
+      }
+#endif
     }
     // The wall collisions of i need only its corrected velocity and the boundary particles'
     // (which this loop does not change): applied in the same pass over its neighbours' list.

@@ -21,6 +21,7 @@
 #include "physics/NumberDensity_Jandaghian2020.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
+#include "physics/PredictionSumsAvx512.h"
 #include "physics/PressureGradient.h"
 #include "physics/SurfacePressureCap.h"
 #include "physics/TimeStep.h"
@@ -218,6 +219,8 @@ class Simulation {
   // particles within re of a surface particle, listed in band_, for the tensile switch and the
   // shifting) with its normals.
   std::vector<double> n_sum_, grad_x_, grad_y_, band_x_, band_y_;
+  PairRows pair_rows_;            // the AVX-512 pair passes' rows (operators/PairRows.h)
+  bool prediction_rows_ = false;  // pair_rows_ hold the prediction's (until the correction)
   std::vector<std::int32_t> band_;
   std::vector<std::uint8_t> in_band_;
   // Under density_rate: band_stamp_ where the particle or one in its list is in this step's band

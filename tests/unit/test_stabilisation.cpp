@@ -2,7 +2,7 @@
 // density sums and the continuity update, the density diffusion with and without its
 // hydrostatic correction, the free-surface scan, the shifting and its surface projection, the
 // tensile-instability switch, the renormalised pressure gradient, the pressure bound and the
-// wall's density.
+// wall's density; and the AVX-512 forms of the pair passes against their portable loops.
 
 #include <gtest/gtest.h>
 
@@ -25,7 +25,9 @@
 #include "physics/NumberDensity_Jandaghian2020.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
+#include "physics/PredictionSumsAvx512.h"
 #include "physics/PressureGradient.h"
+#include "physics/PressureGradientAvx512.h"
 #include "physics/SurfacePressureCap.h"
 #include "physics/WallDensity_Adami2012.h"
 
@@ -193,6 +195,168 @@ TEST(DensitySums, TheRateFollowsTheShiftToo) {
   // As above: dt^2 |d3n/dt3| and rounding, 1e-5 relative.
   EXPECT_NEAR(rate, fd, 1e-5 * std::abs(rate));
 }
+
+#if WCMPS_PAIRS_AVX512
+/// The AVX-512 pass against the portable loop for every fluid particle of a flowing, jittered
+/// block with its first `fluid_begin` particles as boundary: lists of 8 to 40 pairs, so every
+/// remainder of a vector of eight.
+template <bool kShift>
+void expect_avx512_matches_portable(std::int64_t fluid_begin) {
+  Cloud c = flowing_block(kShift);
+  for (std::int64_t k = 0; k < c.size(); ++k) {
+    c.n[k] = lattice().n0 * (1.0 + 0.01 * std::sin(200.0 * c.x[k] + 90.0 * c.y[k]));
+  }
+  const DensitySumsSetup g = setup(true);
+  const DensityInputs d{c.n.data(), fluid_begin, {0.0, -3e-4}, g.inv_f0,         g.clumping_r,
+                        g.inv_w_dl, 0.05,        {0.0, 2e-4},  c.shift_u.data(), c.shift_v.data()};
+  PairRows rows;
+  pack_prediction_rows(rows, c.size(), c.x.data(), c.y.data(), c.u.data(), c.v.data(), c.n.data(),
+                       kShift ? c.shift_u.data() : nullptr, kShift ? c.shift_v.data() : nullptr);
+  std::vector<PredictionSums> portable, avx;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    portable.push_back(prediction_sums<true, true, kShift>(Kernel(kRe), i, c.list.of(i), c.x.data(),
+                                                           c.y.data(), c.u.data(), c.v.data(), d));
+    avx.push_back(prediction_sums_avx512<kShift>(Kernel(kRe), i, c.list.of(i), rows.data(), d));
+  }
+  const std::vector<double (*)(const PredictionSums&)> fields = {
+      [](const PredictionSums& p) { return p.lap.x; },
+      [](const PredictionSums& p) { return p.lap.y; },
+      [](const PredictionSums& p) { return p.q.x; },
+      [](const PredictionSums& p) { return p.q.y; },
+      [](const PredictionSums& p) { return p.rate; },
+      [](const PredictionSums& p) { return p.lapl; },
+      [](const PredictionSums& p) { return p.n; },
+      [](const PredictionSums& p) { return p.gradient.x; },
+      [](const PredictionSums& p) { return p.gradient.y; }};
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    double largest = 0.0;
+    for (const auto& p : portable) largest = std::max(largest, std::abs(fields[f](p)));
+    ASSERT_GT(largest, 0.0) << "sum " << f;
+    for (std::size_t k = 0; k < portable.size(); ++k) {
+      // The same terms added in another order (eight lanes, then across them) and fused
+      // differently: at most a few ulp of the largest term per addition, 40 additions.
+      EXPECT_NEAR(fields[f](avx[k]), fields[f](portable[k]), 1e-12 * largest)
+          << "sum " << f << ", particle " << k + static_cast<std::size_t>(fluid_begin)
+          << ", list of " << c.list.of(static_cast<std::int64_t>(k) + fluid_begin).size();
+    }
+  }
+}
+
+TEST(PredictionSumsAvx512, MatchesThePortableLoop) {
+  expect_avx512_matches_portable<false>(20);
+  expect_avx512_matches_portable<true>(20);
+}
+
+TEST(PredictionSumsAvx512, MatchesThePortableLoopWithoutBoundary) {
+  // The spare lanes of a list's last vector read particle 0, here a fluid particle.
+  expect_avx512_matches_portable<false>(0);
+  expect_avx512_matches_portable<true>(0);
+}
+
+/// The AVX-512 variational gradient against the portable loops, plain and with the band's
+/// correctors, for every fluid particle of a jittered block whose first 20 particles are
+/// boundary: q of both signs, correctors on about half of the particles (0 on boundary ones).
+template <bool kCorrected>
+void expect_gradient_matches_portable() {
+  const Cloud c = block(15, 15, 0.2);
+  const std::int64_t fluid_begin = 20;
+  std::vector<double> q(c.x.size()), axx(c.x.size()), axy(c.x.size()), ayy(c.x.size());
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    q[k] = 1e3 * std::sin(150.0 * c.x[k] - 70.0 * c.y[k]);
+    const bool corrected = static_cast<std::int64_t>(k) >= fluid_begin && k % 2 == 0;
+    axx[k] = corrected ? 0.1 * q[k] * std::cos(90.0 * c.y[k]) : 0.0;
+    axy[k] = corrected ? 0.05 * q[k] : 0.0;
+    ayy[k] = corrected ? -0.07 * q[k] : 0.0;
+  }
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  const DensityRate_Randles1996::Excess excess{axx.data(),  axy.data(), ayy.data(),
+                                               fluid_begin, nullptr,    0};
+  PairRows rows;
+  pack_gradient_rows(rows, c.size(), c.x.data(), c.y.data(), q.data(), axx.data(), axy.data(),
+                     ayy.data());
+  std::vector<Vec2> portable, avx;
+  double largest = 0.0;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    const double ti = std::abs(q[static_cast<std::size_t>(i)]);  // the switch's own term
+    const Vec2 p =
+        kCorrected
+            ? DensityRate_Randles1996::gathered_gradient(Kernel(kRe), i, c.list.of(i), c.x.data(),
+                                                         c.y.data(), q.data(), ti, excess) *
+                  (lc.gradient_correction * lc.n0)
+            : ops.gradient_variational(i, c.list.of(i), c.x.data(), c.y.data(), q.data(), ti);
+    portable.push_back(p);
+    avx.push_back(variational_gradient_avx512<kCorrected>(Kernel(kRe), i, c.list.of(i), rows.data(),
+                                                          ti, fluid_begin) *
+                  (lc.gradient_correction * lc.n0));
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  }
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t k = 0; k < portable.size(); ++k) {
+    // The same terms in another order and fused differently: a few ulp of the largest term per
+    // addition, 40 additions.
+    EXPECT_NEAR(avx[k].x, portable[k].x, 1e-12 * largest) << "particle " << k;
+    EXPECT_NEAR(avx[k].y, portable[k].y, 1e-12 * largest) << "particle " << k;
+  }
+}
+
+TEST(PressureGradientAvx512, MatchesThePortableLoop) {
+  expect_gradient_matches_portable<false>();
+}
+
+TEST(PressureGradientAvx512, MatchesThePortableLoopWithTheBandsCorrectors) {
+  expect_gradient_matches_portable<true>();
+}
+
+TEST(DensityRateAvx512, MatchesThePortableLoop) {
+  // The band's pair sums from the prediction's rows against the portable loop, every fluid
+  // particle of a flowing jittered block whose first 20 particles are boundary (lists of 8 to
+  // 40 pairs), and one particle placed on top of another (r = 0: it adds nothing).
+  Cloud c = flowing_block(false);
+  c.x[200] = c.x[201];
+  c.y[200] = c.y[201];
+  c.build();
+  for (std::int64_t k = 0; k < c.size(); ++k) {
+    c.u[k] = 0.3 * c.y[k] - 0.8 * c.x[k] + 0.05;
+    c.v[k] = -0.4 * c.x[k] + 0.6 * c.y[k];
+  }
+  const std::int64_t fluid_begin = 20;
+  PairRows rows;
+  pack_prediction_rows(rows, c.size(), c.x.data(), c.y.data(), c.u.data(), c.v.data(), c.n.data(),
+                       nullptr, nullptr);
+  using R = DensityRate_Randles1996;
+  std::vector<R::Sums> portable, avx;
+  double largest_b = 0.0, largest_p = 0.0;
+  int boundaries = 0;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    const R::Sums p = R::sums(Kernel(kRe), i, c.list.of(i), c.x.data(), c.y.data(), c.u.data(),
+                              c.v.data(), fluid_begin);
+    portable.push_back(p);
+    avx.push_back(R::sums_avx512(Kernel(kRe), i, c.list.of(i), rows.data(), fluid_begin));
+    largest_b =
+        std::max({largest_b, std::abs(p.bxu), std::abs(p.bxv), std::abs(p.byu), std::abs(p.byv)});
+    largest_p = std::max({largest_p, std::abs(p.pxx), std::abs(p.pxy), std::abs(p.pyy)});
+    boundaries += p.boundary ? 1 : 0;
+  }
+  ASSERT_GT(largest_b, 0.0);
+  ASSERT_GT(boundaries, 0);  // some have a boundary particle within re, most do not
+  ASSERT_LT(boundaries, static_cast<int>(portable.size()) / 2);
+  for (std::size_t k = 0; k < portable.size(); ++k) {
+    const R::Sums& a = avx[k];
+    const R::Sums& p = portable[k];
+    EXPECT_TRUE(std::isfinite(a.bxu + a.pxx)) << "particle " << k;
+    // Another order of the same 40 terms: a few ulp of the largest per addition.
+    EXPECT_NEAR(a.bxu, p.bxu, 1e-12 * largest_b) << "particle " << k;
+    EXPECT_NEAR(a.bxv, p.bxv, 1e-12 * largest_b) << "particle " << k;
+    EXPECT_NEAR(a.byu, p.byu, 1e-12 * largest_b) << "particle " << k;
+    EXPECT_NEAR(a.byv, p.byv, 1e-12 * largest_b) << "particle " << k;
+    EXPECT_NEAR(a.pxx, p.pxx, 1e-12 * largest_p) << "particle " << k;
+    EXPECT_NEAR(a.pxy, p.pxy, 1e-12 * largest_p) << "particle " << k;
+    EXPECT_NEAR(a.pyy, p.pyy, 1e-12 * largest_p) << "particle " << k;
+    EXPECT_EQ(a.boundary, p.boundary) << "particle " << k;
+  }
+}
+#endif
 
 TEST(DensitySums, TheShiftingGradientIgnoresTheWatersCompression) {
   // A column compressed row by row to the hydrostatic n/n0 = s(depth) of the equation of state
