@@ -857,8 +857,10 @@ void Simulation::correct(double dt) {
       const Vec2 g = scheme.gradient(ops_, i, nb, t.x.data(), t.y.data(), input);
       t.u[i] += c * g.x;
       t.v[i] += c * g.y;
-      return collide && collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
-                                         ps.kind.data()) > 0;
+      // A particle with no boundary particle in its list has none to collide with.
+      return collide && near_wall_[i] &&
+             collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
+                              ps.kind.data()) > 0;
     });
     // The band's correctors leave the pairs with boundary particles plain: the body's force
     // has no part of them. (The case parser lets density_rate with the variational gradient
