@@ -73,6 +73,10 @@ VARIANTS = [
     ("wall_density n0, c0 x 2", 20, {"wall_density": '"n0"'}),
     ("density_rate summed (the default until 2026-12-04, later)", 10,
      {"density_rate": '"summed"'}),
+    ("gradient_renormalisation khayyer2011-deviatoric", 10,
+     {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
+    ("gradient_renormalisation khayyer2011-deviatoric, c0 x 2", 20,
+     {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
 ]
 
 

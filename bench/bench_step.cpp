@@ -15,6 +15,8 @@
 //   cures cost.
 // - DamBreak_Hydrostatic, CaseI_Hydrostatic: the defaults with gradient_renormalisation =
 //   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
+// - DamBreak_Deviatoric, CaseI_Deviatoric, DamBreakSurge_Deviatoric: the same with
+//   "khayyer2011-deviatoric" (one thread; the surge at DL 5 mm).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
@@ -56,7 +58,7 @@ namespace {
 
 using namespace wcmps;
 
-enum class Scheme { Defaults, Old, Hydrostatic, BandRate };
+enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, BandRate };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
                                  Scheme scheme = Scheme::Defaults, double start_time = 0.0) {
@@ -66,6 +68,9 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
   if (scheme == Scheme::Old) use_scheme_3a85288(spec);
   if (scheme == Scheme::Hydrostatic) {
     spec.gradient_renormalisation = GradientRenormalisation::Hydrostatic;
+  }
+  if (scheme == Scheme::Deviatoric) {
+    spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
   if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
@@ -130,6 +135,15 @@ void DamBreak_Hydrostatic(benchmark::State& state) {
 }
 void CaseI_Hydrostatic(benchmark::State& state) {
   step(state, "caseI", Scheme::Hydrostatic);
+}
+void DamBreak_Deviatoric(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Deviatoric);
+}
+void CaseI_Deviatoric(benchmark::State& state) {
+  step(state, "caseI", Scheme::Deviatoric);
+}
+void DamBreakSurge_Deviatoric(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Deviatoric, kSurge);
 }
 void DamBreak_BandRate(benchmark::State& state) {
   step(state, "dambreak", Scheme::BandRate);
@@ -204,6 +218,21 @@ BENCHMARK(DamBreak_Hydrostatic)
 BENCHMARK(CaseI_Hydrostatic)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_Deviatoric)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_Deviatoric)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_Deviatoric)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreak_BandRate)

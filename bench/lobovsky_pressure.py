@@ -87,7 +87,9 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
             {"wall_density": '"adami2012"', "artificial_viscosity": "0.0"}),
            ("wall_density n0 (the default until 2026-12-04)", {"wall_density": '"n0"'}),
            ("density_rate summed (the default until 2026-12-04, later)",
-            {"density_rate": '"summed"'})]
+            {"density_rate": '"summed"'}),
+           ("gradient_renormalisation khayyer2011-deviatoric",
+            {"gradient_renormalisation": '"khayyer2011-deviatoric"'})]
 
 
 def case_text(physics, dl):

@@ -9,7 +9,8 @@ Runs the case with each scheme of SCHEMES below (rows 0-3: the new default, the 
 3a85288, each with and without artificial viscosity; rows 4 on: the default with one change each,
 for where the loss comes from; rows 13-16 the artificial viscosity's alpha; rows 20-23 the
 renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the kernel radius and
-the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised), reads gauges.csv,
+the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised;
+rows 41-42 the hydrostatic gradient read through M's deviatoric part), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -108,6 +109,11 @@ SCHEMES = [
     ("new, density rate summed", {"density_rate": '"summed"'}),
     ("new, density rate summed, artificial viscosity 0",
      {"density_rate": '"summed"', "artificial_viscosity": "0.0"}),
+    # 41-42: the hydrostatic gradient read through M's deviatoric part (2026-12-07)
+    ("new, deviatoric hydrostatic gradient",
+     {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
+    ("new, deviatoric hydrostatic gradient, artificial viscosity 0",
+     {"gradient_renormalisation": '"khayyer2011-deviatoric"', "artificial_viscosity": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

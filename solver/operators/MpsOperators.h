@@ -239,13 +239,19 @@ class MpsOperators {
     return {c * su, c * sv};
   }
 
+  /// SecondMoments of a whole neighbourhood from its unscaled sums (pxx, pxy, pyy).
+  SecondMoments whole_moments(double pxx, double pxy, double pyy) const {
+    const double m = c_grad_ / n0_;
+    return {m * pxx, m * pxy, m * pyy, m * pxx, m * pxy, m * pyy};
+  }
+
  private:
   /// SecondMoments from the unscaled sums over `part` (pxx, pxy, pyy), summing M over nb when
   /// part is not all of it.
   SecondMoments moments(std::int64_t i, IdRange nb, IdRange part, const double* x, const double* y,
                         double pxx, double pxy, double pyy) const {
     const double m = c_grad_ / n0_;
-    SecondMoments s{m * pxx, m * pxy, m * pyy, m * pxx, m * pxy, m * pyy};
+    SecondMoments s = whole_moments(pxx, pxy, pyy);
     if (part.first == nb.first && part.last == nb.last) return s;
     const double xi = x[i], yi = y[i];
     double mxx = 0.0, mxy = 0.0, myy = 0.0;

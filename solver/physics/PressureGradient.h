@@ -62,8 +62,12 @@ struct PressureGradient_Koshizuka1996 {
 template <bool kSwitch, GradientRenormalisation kRenormalisation = GradientRenormalisation::None>
 struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
-  /// Whether the AVX-512 pass applies (`rows`): the gradient not renormalised.
-  static constexpr bool kRows = kRenormalisation == GradientRenormalisation::None;
+  /// The renormalisation that adds a term for rho g ("khayyer2011-hydrostatic", "-deviatoric").
+  static constexpr bool kHydrostatic = kRenormalisation == GradientRenormalisation::Hydrostatic ||
+                                       kRenormalisation == GradientRenormalisation::Deviatoric;
+  /// Whether the AVX-512 pass applies (`rows`): the gradient not renormalised, or with a
+  /// hydrostatic form (whose M the pass sums beside the gradient).
+  static constexpr bool kRows = kRenormalisation == GradientRenormalisation::None || kHydrostatic;
   /// With the switch: particles it leaves out (1), the free-surface region (Sun et al. 2018).
   const std::uint8_t* exempt = nullptr;
   /// With a renormalisation: the free-surface band (1) and the fluid with a boundary particle in
@@ -103,8 +107,20 @@ struct PressureGradient_Suzuki2007 {
           const double t = ti + p_over_n2[i];
           return Vec2{c * (d.x + t * s.sx), c * (d.y + t * s.sy)} + band_excess(ops, i, part, x, y);
         } else {
+#if WCMPS_PAIRS_AVX512
+          if (rows && part.first == nb.first && part.last == nb.last) {
+            double m[3];
+            const Vec2 g =
+                excess.reaches(i)
+                    ? variational_gradient_avx512<true, true>(ops.kernel(), i, nb, rows, ti,
+                                                              excess.fluid_begin, m)
+                    : variational_gradient_avx512<false, true>(ops.kernel(), i, nb, rows, ti, 0, m);
+            return g * c + R::hydrostatic_term<kRenormalisation>(
+                               ops.whole_moments(m[0], m[1], m[2]), rho_g);
+          }
+#endif
           const VariationalMoments s = ops.variational_moments(i, nb, part, x, y, p_over_n2, ti);
-          const Vec2 h = R::hydrostatic(s.m, rho_g);
+          const Vec2 h = R::hydrostatic_term<kRenormalisation>(s.m, rho_g);
           return Vec2{c * s.gx + h.x, c * s.gy + h.y} + band_excess(ops, i, part, x, y);
         }
       }
@@ -183,6 +199,13 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
           }
           return f(PressureGradient_Suzuki2007<false, R::Hydrostatic>{nullptr, o.band, o.near_wall,
                                                                       o.rho_g, o.excess});
+        case R::Deviatoric:
+          if (o.tensile_switch) {
+            return f(PressureGradient_Suzuki2007<true, R::Deviatoric>{exempt, o.band, o.near_wall,
+                                                                      o.rho_g, o.excess});
+          }
+          return f(PressureGradient_Suzuki2007<false, R::Deviatoric>{nullptr, o.band, o.near_wall,
+                                                                     o.rho_g, o.excess});
         case R::None:
           break;
       }

@@ -37,10 +37,13 @@ inline void pack_gradient_rows(PairRows& rows, std::int64_t count, const double*
 
 /// sum_j (t_i + q_j) W'(r_ij) (r_i - r_j) / r_ij: MpsOperators::gradient_variational before
 /// its scale C n0; with kCorrected, DensityRate_Randles1996::gathered_gradient: the sum of
-/// ((t_i + q_j) I + A_j + [j fluid] A_i) W'(r_ij) (r_i - r_j) / r_ij.
-template <bool kCorrected>
+/// ((t_i + q_j) I + A_j + [j fluid] A_i) W'(r_ij) (r_i - r_j) / r_ij. With kMoments, also the
+/// unscaled terms of M_i, sum_j -W'(r_ij) (r_i - r_j)(r_i - r_j)^T / r_ij, in m (xx, xy, yy):
+/// MpsOperators::variational_moments's, for the hydrostatic forms of the renormalisation.
+template <bool kCorrected, bool kMoments = false>
 Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange nb,
-                                 const PairRow* rows, double ti, std::int64_t fluid_begin) {
+                                 const PairRow* rows, double ti, std::int64_t fluid_begin,
+                                 double* m = nullptr) {
   const double* me = rows[i].f;
   const __m512d xi = _mm512_set1_pd(me[kRowGradX]), yi = _mm512_set1_pd(me[kRowGradY]);
   const __m512d v_ti = _mm512_set1_pd(ti);
@@ -51,7 +54,7 @@ Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange n
   const __m512d one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
   const __m512d far = _mm512_set1_pd(2.0 * kernel.re);  // a spare lane's dx: W' = 0
   const __m256i first_fluid = _mm256_set1_epi32(static_cast<std::int32_t>(fluid_begin));
-  __m512d gx = zero, gy = zero;
+  __m512d gx = zero, gy = zero, mxx = zero, mxy = zero, myy = zero;
   const std::int32_t* id = nb.first;
   const std::int64_t size = nb.size();
   for (std::int64_t k = 0; k < size; k += 8) {
@@ -79,6 +82,17 @@ Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange n
       gx = _mm512_fmadd_pd(f, dx, gx);
       gy = _mm512_fmadd_pd(f, dy, gy);
     }
+    if constexpr (kMoments) {
+      const __m512d wdx = _mm512_mul_pd(wd, dx);
+      mxx = _mm512_fnmadd_pd(wdx, dx, mxx);
+      mxy = _mm512_fnmadd_pd(wdx, dy, mxy);
+      myy = _mm512_fnmadd_pd(_mm512_mul_pd(wd, dy), dy, myy);
+    }
+  }
+  if constexpr (kMoments) {
+    m[0] = _mm512_reduce_add_pd(mxx);
+    m[1] = _mm512_reduce_add_pd(mxy);
+    m[2] = _mm512_reduce_add_pd(myy);
   }
   return {_mm512_reduce_add_pd(gx), _mm512_reduce_add_pd(gy)};
 }

@@ -204,9 +204,10 @@ struct CaseSpec {
   /// I's cavity a third smaller, the quiet benchmarks unchanged (docs/validation.md, "A surface
   /// particle that pushes itself off").
   bool surface_pressure_cap = true;
-  /// The variational gradient made to read rho g ("khayyer2011-hydrostatic") or any linear
-  /// pressure ("khayyer2011") exactly on a strained arrangement, away from the surface band and
-  /// the walls (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
+  /// The variational gradient made to read rho g ("khayyer2011-hydrostatic"), rho g without the
+  /// error of the arrangement's shape ("khayyer2011-deviatoric") or any linear pressure
+  /// ("khayyer2011") exactly on a strained arrangement, away from the surface band and the walls
+  /// (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
   GradientRenormalisation gradient_renormalisation = GradientRenormalisation::None;
   /// The evolved n's rate in the free-surface band: "randles1996" (the kernel gradient
   /// renormalised by the kernel's moments in the rate and the variational gradient together:

@@ -308,6 +308,64 @@ TEST(PressureGradientAvx512, MatchesThePortableLoopWithTheBandsCorrectors) {
   expect_gradient_matches_portable<true>();
 }
 
+/// The hydrostatic forms of the renormalisation through the scheme, with the rows (M summed in
+/// the AVX-512 pass) and without (the portable loops), plain and with the band's correctors, on
+/// a sheared jittered block under a hydrostatic q with a wave's part on top.
+template <GradientRenormalisation kForm>
+void expect_hydrostatic_rows_match_portable(bool corrected) {
+  const Cloud c = block(15, 15, 0.15, 5);
+  const std::int64_t fluid_begin = 20;
+  std::vector<double> q(c.x.size()), axx(c.x.size()), axy(c.x.size()), ayy(c.x.size());
+  const auto n0 = lattice().n0;
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    q[k] = (5000.0 - 9810.0 * c.y[k] + 300.0 * std::sin(150.0 * c.x[k])) / (n0 * n0);
+    const bool band = corrected && static_cast<std::int64_t>(k) >= fluid_begin && k % 3 == 0;
+    axx[k] = band ? 0.1 * q[k] : 0.0;
+    axy[k] = band ? -0.04 * q[k] : 0.0;
+    ayy[k] = band ? 0.06 * q[k] : 0.0;
+  }
+  // Every particle reached by the band's correctors, or none.
+  const std::vector<std::uint32_t> reached(c.x.size(), 1);
+  DensityRate_Randles1996::Excess excess{};
+  if (corrected) excess = {axx.data(), axy.data(), ayy.data(), fluid_begin, reached.data(), 1};
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  PairRows rows;
+  pack_gradient_rows(rows, c.size(), c.x.data(), c.y.data(), q.data(), axx.data(), axy.data(),
+                     ayy.data());
+  using G = PressureGradient_Suzuki2007<true, kForm>;
+  static_assert(G::kRows);
+  const G portable{nullptr, nullptr, nullptr, {0.0, -9810.0}, excess};
+  G avx = portable;
+  avx.rows = rows.data();
+  double largest = 0.0, largest_term = 0.0;
+  std::vector<Vec2> a, b;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    const auto nb = c.list.of(i);
+    a.push_back(portable.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()));
+    b.push_back(avx.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()));
+    // The hydrostatic term itself: the test must see it (a dropped M would fail it).
+    const Vec2 plain =
+        PressureGradient_Suzuki2007<true>{nullptr, nullptr, nullptr, {}, excess}.gradient(
+            ops, i, nb, c.x.data(), c.y.data(), q.data());
+    largest_term = std::max(largest_term, std::hypot(a.back().x - plain.x, a.back().y - plain.y));
+    largest = std::max({largest, std::abs(a.back().x), std::abs(a.back().y)});
+  }
+  ASSERT_GT(largest_term, 0.01 * 9810.0);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    // Another order of the same 40 terms (gradient and M): a few ulp of the largest each.
+    EXPECT_NEAR(b[k].x, a[k].x, 1e-11 * largest) << "particle " << k;
+    EXPECT_NEAR(b[k].y, a[k].y, 1e-11 * largest) << "particle " << k;
+  }
+}
+
+TEST(PressureGradientAvx512, TheHydrostaticFormsMatchThePortableLoops) {
+  for (const bool corrected : {false, true}) {
+    expect_hydrostatic_rows_match_portable<GradientRenormalisation::Hydrostatic>(corrected);
+    expect_hydrostatic_rows_match_portable<GradientRenormalisation::Deviatoric>(corrected);
+  }
+}
+
 TEST(DensityRateAvx512, MatchesThePortableLoop) {
   // The band's pair sums from the prediction's rows against the portable loop, every fluid
   // particle of a flowing jittered block whose first 20 particles are boundary (lists of 8 to
@@ -819,6 +877,59 @@ TEST(GradientRenormalisation, TheHydrostaticFormReadsRhoGExactly) {
   // The strain shows in M (so the checks above could fail).
   EXPECT_GT(std::abs(s.m.mxx - 1.0) + std::abs(s.m.mxy), 0.02);
   expect_parts_add_up(g, ops, c, i, pushed);
+}
+
+TEST(GradientRenormalisation, TheDeviatoricFormReadsTheShapeAndLeavesTheCompression) {
+  // A wave strains the water without changing its volume. On the lattice stretched along x and
+  // shortened along y (det = 1) the variational gradient reads rho g half a per cent high, the
+  // error of M's deviatoric part; the deviatoric form reads it to second order in the strain (M's
+  // trace moves by its square). On the lattice sheared along x it reads no horizontal force.
+  // Compressed evenly, M is a multiple of I (the square lattice's fourfold symmetry), and the
+  // form adds nothing: it reads rho g through the compression as the variational gradient does,
+  // where the hydrostatic form reads the compression away.
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  const Vec2 rho_g{0.0, -9810.0};
+  using Deviatoric = PressureGradient_Suzuki2007<true, GradientRenormalisation::Deviatoric>;
+  using Hydrostatic = PressureGradient_Suzuki2007<true, GradientRenormalisation::Hydrostatic>;
+  const Deviatoric dev{nullptr, nullptr, nullptr, rho_g, {}};
+  const Hydrostatic hyd{nullptr, nullptr, nullptr, rho_g, {}};
+  const auto i = at(7, 7, 15);
+  struct Read {
+    Vec2 plain, dev, hyd;
+  };
+  const auto read = [&](const Cloud& c) {
+    const auto nb = c.list.of(i);
+    const auto q = linear_q(c, 5000.0, 0.0, rho_g.y);
+    return Read{
+        PressureGradient_Suzuki2007<true>{}.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()),
+        dev.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()),
+        hyd.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data())};
+  };
+  // The lattices are symmetric about i: the own term adds nothing, and what is compared is
+  // exact to the rounding of ~40 terms, 1e-8 of rho g, unless said.
+  const double tol = 1e-8 * 9810.0;
+  {
+    const Cloud c = deformed_block(15, 15, 1.03, 0.0, 0.0, 1.0 / 1.03);
+    const Read r = read(c);
+    EXPECT_GT(std::abs(r.plain.y - rho_g.y), 0.004 * 9810.0);  // M_yy = 1.005
+    EXPECT_LT(std::abs(r.dev.y - rho_g.y), 0.02 * std::abs(r.plain.y - rho_g.y));
+    expect_parts_add_up(dev, ops, c, i, linear_q(c, 5000.0, 500.0, rho_g.y));
+  }
+  {
+    const Cloud c = deformed_block(15, 15, 1.0, 0.12, 0.0, 1.0);
+    const Read r = read(c);
+    EXPECT_GT(std::abs(r.plain.x), 0.001 * 9810.0);  // M_xy = 0.002
+    EXPECT_NEAR(r.dev.x, 0.0, tol);
+  }
+  {
+    const Cloud c = deformed_block(15, 15, 0.99, 0.0, 0.0, 0.99);
+    const Read r = read(c);
+    EXPECT_NEAR(r.dev.x, r.plain.x, tol);
+    EXPECT_NEAR(r.dev.y, r.plain.y, tol);
+    EXPECT_LT(r.plain.y, 1.02 * rho_g.y);  // M = 1.0215 I
+    EXPECT_NEAR(r.hyd.y, rho_g.y, tol);
+  }
 }
 
 /// The rate's sums of particle i of the cloud under the velocity field u = A r (a_xx ... a_yy).
