@@ -57,7 +57,8 @@
 /// reads the compression away, moved the balance (the pressure error's growth with depth
 /// doubled), and this form leaves it where the variational gradient puts it. Its still water
 /// settles to about twice the defaults' spurious speed (about 2 against 1 mm/s from 10 s on, most
-/// of it under the surface band's edge; docs/validation.md, "Wave damping: a standing wave").
+/// of it in the rows under the surface and steady in time; docs/validation.md, "The shape's error
+/// alone"): not the default.
 ///
 /// All three forms are left out where the kernel is not full or M_i does not measure the flow: in
 /// the free-surface band (the surface particles and those within re of one,

@@ -57,8 +57,8 @@ struct PressureGradient_Koshizuka1996 {
 /// tensile-instability control of Sun et al. (2018) (physics/NegativePressure_Sun2018.h): a
 /// particle's own term p_i/n_i^2 taken as its absolute value, so that pairs do not attract where
 /// p_i < 0. kRenormalisation: outside the free-surface band and away from the walls, the
-/// difference part renormalised or the hydrostatic gradient read exactly
-/// (physics/GradientRenormalisation_Khayyer2011.h).
+/// difference part renormalised, or the hydrostatic gradient read exactly (wholly, or without
+/// the error of the arrangement's shape) (physics/GradientRenormalisation_Khayyer2011.h).
 template <bool kSwitch, GradientRenormalisation kRenormalisation = GradientRenormalisation::None>
 struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
