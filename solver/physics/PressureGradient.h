@@ -173,6 +173,18 @@ struct GradientOptions {
   DensityRate_Randles1996::Excess excess;   ///< the band's correctors (density_rate)
 };
 
+/// Calls f with the variational gradient renormalised by kForm, with or without the switch (which
+/// exempts the band, as the renormalisation does).
+template <GradientRenormalisation kForm, class F>
+decltype(auto) with_renormalised_gradient(const GradientOptions& o, F&& f) {
+  if (o.tensile_switch) {
+    return f(
+        PressureGradient_Suzuki2007<true, kForm>{o.band, o.band, o.near_wall, o.rho_g, o.excess});
+  }
+  return f(
+      PressureGradient_Suzuki2007<false, kForm>{nullptr, o.band, o.near_wall, o.rho_g, o.excess});
+}
+
 /// Calls f(Scheme{}) with the scheme type that `s` names, the variational gradient with the
 /// switch of Sun et al. (2018) and the renormalisation that `o` selects (the other two have no
 /// own term to switch and are not renormalised: they are unchanged).
@@ -186,26 +198,11 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
     case PressureGradientScheme::Suzuki2007:
       switch (o.renormalisation) {
         case R::Khayyer2011:
-          if (o.tensile_switch) {
-            return f(PressureGradient_Suzuki2007<true, R::Khayyer2011>{
-                exempt, o.band, o.near_wall, {}, o.excess});
-          }
-          return f(PressureGradient_Suzuki2007<false, R::Khayyer2011>{
-              nullptr, o.band, o.near_wall, {}, o.excess});
+          return with_renormalised_gradient<R::Khayyer2011>(o, f);
         case R::Hydrostatic:
-          if (o.tensile_switch) {
-            return f(PressureGradient_Suzuki2007<true, R::Hydrostatic>{exempt, o.band, o.near_wall,
-                                                                       o.rho_g, o.excess});
-          }
-          return f(PressureGradient_Suzuki2007<false, R::Hydrostatic>{nullptr, o.band, o.near_wall,
-                                                                      o.rho_g, o.excess});
+          return with_renormalised_gradient<R::Hydrostatic>(o, f);
         case R::Deviatoric:
-          if (o.tensile_switch) {
-            return f(PressureGradient_Suzuki2007<true, R::Deviatoric>{exempt, o.band, o.near_wall,
-                                                                      o.rho_g, o.excess});
-          }
-          return f(PressureGradient_Suzuki2007<false, R::Deviatoric>{nullptr, o.band, o.near_wall,
-                                                                     o.rho_g, o.excess});
+          return with_renormalised_gradient<R::Deviatoric>(o, f);
         case R::None:
           break;
       }
