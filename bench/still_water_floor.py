@@ -10,9 +10,12 @@ usage: bench/still_water_floor.py [--wcmps build/bin/wcmps] [--out DIR] [--end 7
 
 Frames every 0.05 s. Per run: the largest rms particle speed over the last 0.5 s and its share
 of the run's largest (the start-up transient's peak), the measures of the test; the rms of
-p - rho g (H - y) over the last 0.5 s below the top 3.5 DL, in per cent of rho g H; and at the
-end, the rms speed by region: within 3.5 cm of a wall, within 3.5 cm of the surface (and not of
-a wall), and the rest. Prints a Markdown table, then the median of each variant.
+p - rho g (H - y) over the last 0.5 s below the top 3.5 DL, in per cent of rho g H; at the end,
+the rms speed by region: within 3.5 cm of a wall, within 3.5 cm of the surface (and not of a
+wall), and the rest; and over the last 4 s, the part of the motion that stands still in time
+(the velocity averaged over the frames in cells of 5 cm, its rms weighted by the particles in
+each cell) and the rms speed of the surface row (the top DL, 3.5 cm or more from the side
+walls), where the motion is largest. Prints a Markdown table, then the median of each variant.
 """
 import argparse
 import concurrent.futures
@@ -29,7 +32,8 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
-H, WIDTH, RHO, G, STRIP = 0.7, 0.5, 1000.0, 9.81, 0.035
+H, WIDTH, RHO, G, STRIP, DL = 0.7, 0.5, 1000.0, 9.81, 0.035, 0.01
+CELL, WINDOW = 0.05, 4.0  # m, s: the steady part's cells and the window of the last two measures
 VARIANTS = [
     ("defaults", {}),
     ("gradient_renormalisation khayyer2011-deviatoric",
@@ -64,6 +68,9 @@ def measure(run, end):
     peak = late = 0.0
     err2, count = 0.0, 0
     regions = None
+    cells = np.zeros((int(WIDTH / CELL) + 1, int(1.5 * H / CELL) + 1, 2))
+    in_cell = np.zeros(cells.shape[:2])
+    top2, top_count = 0.0, 0
     for t, name in frames:
         if t < 0.04:
             continue
@@ -80,12 +87,25 @@ def measure(run, end):
             e = f["pressure"][fluid][deep] - RHO * G * (H - y[deep])
             err2 += float(np.sum(e ** 2))
             count += int(deep.sum())
+        if t >= end - WINDOW - 1e-9:
+            ix = np.clip((x / CELL).astype(int), 0, cells.shape[0] - 1)
+            iy = np.clip((y / CELL).astype(int), 0, cells.shape[1] - 1)
+            np.add.at(cells, (ix, iy), vel[:, :2])
+            np.add.at(in_cell, (ix, iy), 1)
+            top = (H - y < DL) & (np.minimum(x, WIDTH - x) >= STRIP)
+            top2 += float(speed2[top].sum())
+            top_count += int(top.sum())
         if t >= end - 1e-9:
             wall = np.minimum(np.minimum(x, WIDTH - x), y) < STRIP
             surface = (H - y < STRIP) & ~wall
             rest = ~wall & ~surface
             regions = [float(np.sqrt(speed2[m].mean())) for m in (wall, surface, rest)]
-    return late, late / peak, 100.0 * np.sqrt(err2 / count) / (RHO * G * H), regions
+    held = in_cell > 0
+    mean = cells[held] / in_cell[held][:, None]
+    steady = float(np.sqrt(((mean ** 2).sum(axis=1) * in_cell[held]).sum() / in_cell[held].sum()))
+    surface_row = float(np.sqrt(top2 / max(top_count, 1)))
+    return (late, late / peak, 100.0 * np.sqrt(err2 / count) / (RHO * G * H), regions, steady,
+            surface_row)
 
 
 def main():
@@ -116,16 +136,19 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = dict(pool.map(run, runs))
     print("| variant | Courant | rms speed, last 0.5 s (m/s) | of the peak | p error rms (% rho g H) "
-          "| at the end: wall strip / under the surface / rest (m/s) |")
-    print("|---|---|---|---|---|---|")
-    for (v, c), (late, share, perr, reg) in results.items():
+          "| at the end: wall strip / under the surface / rest (m/s) "
+          "| last 4 s: steady part; surface row (m/s) |")
+    print("|---|---|---|---|---|---|---|")
+    for (v, c), (late, share, perr, reg, steady, row) in results.items():
         print(f"| {VARIANTS[v][0]} | {c} | {late:.4f} | {share:.2f} | {perr:.2f} | "
-              f"{reg[0]:.4f} / {reg[1]:.4f} / {reg[2]:.4f} |")
+              f"{reg[0]:.4f} / {reg[1]:.4f} / {reg[2]:.4f} | {steady:.5f}; {row:.4f} |")
     for v in sorted({v for v, _ in runs}):
         mine = [r for (w, _), r in results.items() if w == v]
         print(f"median, {VARIANTS[v][0]}: rms {statistics.median(r[0] for r in mine):.4f} m/s, "
               f"of the peak {statistics.median(r[1] for r in mine):.2f}, "
-              f"p error {statistics.median(r[2] for r in mine):.2f} %")
+              f"p error {statistics.median(r[2] for r in mine):.2f} %, "
+              f"steady part {statistics.median(r[4] for r in mine):.5f} m/s, "
+              f"surface row {statistics.median(r[5] for r in mine):.4f} m/s")
 
 
 if __name__ == "__main__":
