@@ -41,22 +41,35 @@
 ///   Inside the water P = m I: L = I and nothing changes. Where the summed rate reads a
 ///   compression the divergence does not have (the trough), the corrected rate reads none.
 ///
-///   L = I (the summed rate and the plain force) where a boundary particle is within re (P
-///   counts the wall's rows, laid on the wall's own uncompressed lattice), and where the particle
-///   is struck. The correction is for a cut kernel in water that deforms gently; where a sheet or
-///   a drop lands on water the kernel sees the impact from one side and L would double it
-///   (without the rule below the Lobovsky dam break stopped at t = 1.05 s with n > 1.2 n0 where
-///   its plunging jet falls back). Struck means any of: n rising faster than sqrt(g / DL) n0 per
-///   second over the step's prediction (the rule of the surface pressure cap,
-///   physics/SurfacePressureCap.h: neighbours closing in faster than a fall through one
-///   spacing), the summed or the corrected rate faster than that, or n already above
-///   n0 (1 + kSqueeze). A band particle under nothing but gravity is compressed by
-///   rho g d / (rho c0^2), d <= re + DL: 2-4e-4 in the cases here (c0 = 26-35 m/s). kSqueeze =
-///   3e-3 is not derived; it sits between that and what an impact leaves behind it: with 6.3e-3
-///   (sqrt(g DL) / c0) and 1e-2 the Lobovsky run at Courant 0.39 stopped at 1.11 and 1.25 s
-///   (docs/validation.md, "The band's rate renormalised"). Below c0 of about 9 m/s gravity alone
-///   would compress the band past it, and the correction would stay off. The sums read u alone:
-///   under shifting_in_continuity the shift's share of the rate stays as summed.
+///   Where a boundary particle is within re, the force keeps L (P counting the wall's rows) and
+///   the rate stays summed. The force's correction is a stress, A = q (L - I) on each band
+///   particle, that pushes nothing where it is uniform and pushes where it ends. Ended a
+///   kernel's width from a wall (L = I there in force and rate: the first form of this rule),
+///   its edge pushed the band's water alone, which nothing held, and the still tank's surface
+///   ran in a steady current towards both walls (docs/validation.md, "The wall's share of the
+///   band's stress"); kept up to the wall and carried by the pairs with boundary particles (A_i
+///   in every pair of i, the boundary particles' own A being zero), the edge presses on the
+///   wall, which holds it. The rate there stays summed: over a bed or a block the band is a
+///   thin layer sliding along it, and with its rate corrected too (the wall's pairs plain,
+///   central, or left out of P) the layer under case I's trough opened more (the short run's
+///   largest cavity 0.16-0.19 against 0.05 cm2). So near a boundary the pressure's work is not
+///   what the number densities store (below); the acoustic and standing-wave benchmarks measure
+///   what that costs.
+///
+///   L = I (the summed rate and the plain force) where the particle is struck. The correction is
+///   for a cut kernel in water that deforms gently; where a sheet or a drop lands on water the
+///   kernel sees the impact from one side and L would double it (without the rule below the
+///   Lobovsky dam break stopped at t = 1.05 s with n > 1.2 n0 where its plunging jet falls back).
+///   Struck means any of: n rising faster than sqrt(g / DL) n0 per second over the step's
+///   prediction (the rule of the surface pressure cap, physics/SurfacePressureCap.h: neighbours
+///   closing in faster than a fall through one spacing), the summed or the corrected rate faster
+///   than that, or n already above n0 (1 + kSqueeze). A band particle under nothing but gravity is
+///   compressed by rho g d / (rho c0^2), d <= re + DL: 2-4e-4 in the cases here (c0 = 26-35 m/s).
+///   kSqueeze = 3e-3 is not derived; it sits between that and what an impact leaves behind it:
+///   with 6.3e-3 (sqrt(g DL) / c0) and 1e-2 the Lobovsky run at Courant 0.39 stopped at 1.11
+///   and 1.25 s (docs/validation.md, "The band's rate renormalised"). Below c0 of about 9 m/s
+///   gravity alone would compress the band past it, and the correction would stay off. The sums
+///   read u alone: under shifting_in_continuity the shift's share of the rate stays as summed.
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +106,7 @@ struct DensityRate_Randles1996 {
   struct Sums {
     double bxu = 0.0, bxv = 0.0, byu = 0.0, byv = 0.0;  ///< B (1/s, unscaled)
     double pxx = 0.0, pxy = 0.0, pyy = 0.0;             ///< P (-)
-    bool boundary = false;                              ///< a particle before fluid_begin within re
+    bool boundary = false;  ///< a particle before fluid_begin within re: the rate stays summed
     double summed() const { return bxu + byv; }
   };
 
@@ -242,26 +255,30 @@ struct DensityRate_Randles1996 {
            std::max(summed_rate, corrected_rate) > limit || st.n_before > n0 * (1.0 + kSqueeze);
   }
 
-  /// The corrector of a band particle: the renormalisation, or I near a boundary or when struck.
+  /// The corrector of a band particle: the renormalisation, or I when struck.
   Corrector corrector(const Sums& s, const Step& st) const {
-    if (s.boundary) return {};
     const Corrector l = renormalisation(s);
     if (struck(st, s.summed(), rate(s, l))) return {};
     return l;
   }
 
+  /// The band particle's rate: corrected, or summed where a boundary particle is within re.
+  static double band_rate(const Sums& s, const Corrector& l) {
+    return s.boundary ? s.summed() : rate(s, l);
+  }
+
   /// The variational gradient of fluid particle i with the band's correctors, gathered by i
   /// (unscaled: times C n0), in one pass over its list:
   ///
-  ///     sum_j ((t_i + q_j) I + A_j + [j fluid] A_i) W'(r_ij) e_ij,   A = q (L - I),
+  ///     sum_j ((t_i + q_j) I + A_i + A_j) W'(r_ij) e_ij,   A = q (L - I),
   ///
   /// that is sum_j (q_i L_i + q_j L_j) W'(r_ij) e_ij, with t_i the own term of
   /// MpsOperators::gradient_variational (q_i, or |q_i| under the tensile switch where L_i = I).
-  /// The arrays a (A's xx, xy, yy) are zero where L = I and on boundary particles, so that the
-  /// pairs with boundary particles keep the plain form: a corrected particle has none within
-  /// re at r^n, where its L was summed, and one that comes within re by r* is read plain, as the
-  /// body's force reads it (Simulation::body_force). Gathered, each particle sums only into
-  /// itself: the pass runs in parallel and its result does not depend on the thread count.
+  /// The arrays a (A's xx, xy, yy) are zero where L = I and on boundary particles: a pair with a
+  /// boundary particle carries A_i alone (the wall's share of the band's stress, above), and the
+  /// body's force reads the same pairs (Simulation::body_force), so the pair forces between the
+  /// water and the body stay equal and opposite. Gathered, each particle sums only into itself:
+  /// the pass runs in parallel and its result does not depend on the thread count.
   ///
   /// Only a band particle has an A: a particle with none in its list (the water deeper than
   /// re + skin below the band) has nothing to gather, and reaches() sends it to the plain
@@ -273,7 +290,6 @@ struct DensityRate_Randles1996 {
     const double* xx = nullptr;
     const double* xy = nullptr;
     const double* yy = nullptr;
-    std::int64_t fluid_begin = 0;
     const std::uint32_t* reached = nullptr;  ///< stamp: i or one in its list is in the band
     std::uint32_t stamp = 0;                 ///< this step's mark
     /// Whether fluid particle i or one in its list is in the band.
@@ -284,8 +300,8 @@ struct DensityRate_Randles1996 {
     return gathered<true>(w, i, nb, x, y, q, ti, a);
   }
 
-  /// What gathered_gradient adds to the plain gradient of i (unscaled): sum_j (A_j + [j fluid]
-  /// A_i) W'(r_ij) e_ij, for the particles whose plain part another form computes (the
+  /// What gathered_gradient adds to the plain gradient of i (unscaled): sum_j (A_i + A_j)
+  /// W'(r_ij) e_ij, for the particles whose plain part another form computes (the
   /// renormalised gradients, PressureGradient.h).
   static Vec2 gathered_excess(const Kernel& w, std::int64_t i, IdRange nb, const double* x,
                               const double* y, const Excess& a) {
@@ -307,8 +323,7 @@ struct DensityRate_Randles1996 {
       const double dx = xi - x[j], dy = yi - y[j];
       const double r = std::sqrt(dx * dx + dy * dy);
       const double f = w.derivative(r) / r;
-      const double m = j >= a.fluid_begin ? 1.0 : 0.0;
-      double axx = a.xx[j] + m * ixx, axy = a.xy[j] + m * ixy, ayy = a.yy[j] + m * iyy;
+      double axx = a.xx[j] + ixx, axy = a.xy[j] + ixy, ayy = a.yy[j] + iyy;
       if constexpr (kPlain) {
         const double s = ti + q[j];
         axx += s;

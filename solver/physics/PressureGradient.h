@@ -112,9 +112,8 @@ struct PressureGradient_Suzuki2007 {
             double m[3];
             const Vec2 g =
                 excess.reaches(i)
-                    ? variational_gradient_avx512<true, true>(ops.kernel(), i, nb, rows, ti,
-                                                              excess.fluid_begin, m)
-                    : variational_gradient_avx512<false, true>(ops.kernel(), i, nb, rows, ti, 0, m);
+                    ? variational_gradient_avx512<true, true>(ops.kernel(), i, nb, rows, ti, m)
+                    : variational_gradient_avx512<false, true>(ops.kernel(), i, nb, rows, ti, m);
             return g * c + R::hydrostatic_term<kRenormalisation>(
                                ops.whole_moments(m[0], m[1], m[2]), rho_g);
           }
@@ -127,11 +126,10 @@ struct PressureGradient_Suzuki2007 {
     }
 #if WCMPS_PAIRS_AVX512
     if (rows) {
-      const Vec2 g = excess.reaches(i)
-                         ? variational_gradient_avx512<true>(ops.kernel(), i, part, rows,
-                                                             own(p_over_n2, i), excess.fluid_begin)
-                         : variational_gradient_avx512<false>(ops.kernel(), i, part, rows,
-                                                              own(p_over_n2, i), 0);
+      const Vec2 g =
+          excess.reaches(i)
+              ? variational_gradient_avx512<true>(ops.kernel(), i, part, rows, own(p_over_n2, i))
+              : variational_gradient_avx512<false>(ops.kernel(), i, part, rows, own(p_over_n2, i));
       return g * (ops.gradient_correction() * ops.n0());
     }
 #endif

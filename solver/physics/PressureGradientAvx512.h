@@ -37,13 +37,12 @@ inline void pack_gradient_rows(PairRows& rows, std::int64_t count, const double*
 
 /// sum_j (t_i + q_j) W'(r_ij) (r_i - r_j) / r_ij: MpsOperators::gradient_variational before
 /// its scale C n0; with kCorrected, DensityRate_Randles1996::gathered_gradient: the sum of
-/// ((t_i + q_j) I + A_j + [j fluid] A_i) W'(r_ij) (r_i - r_j) / r_ij. With kMoments, also the
+/// ((t_i + q_j) I + A_i + A_j) W'(r_ij) (r_i - r_j) / r_ij. With kMoments, also the
 /// unscaled terms of M_i, sum_j -W'(r_ij) (r_i - r_j)(r_i - r_j)^T / r_ij, in m (xx, xy, yy):
 /// MpsOperators::variational_moments's, for the hydrostatic forms of the renormalisation.
 template <bool kCorrected, bool kMoments = false>
 Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange nb,
-                                 const PairRow* rows, double ti, std::int64_t fluid_begin,
-                                 double* m = nullptr) {
+                                 const PairRow* rows, double ti, double* m = nullptr) {
   const double* me = rows[i].f;
   const __m512d xi = _mm512_set1_pd(me[kRowGradX]), yi = _mm512_set1_pd(me[kRowGradY]);
   const __m512d v_ti = _mm512_set1_pd(ti);
@@ -53,7 +52,6 @@ Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange n
   const __m512d slope = _mm512_set1_pd(-3.0 * kernel.inv_re);  // W'(r) = -3 q^2 / re
   const __m512d one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
   const __m512d far = _mm512_set1_pd(2.0 * kernel.re);  // a spare lane's dx: W' = 0
-  const __m256i first_fluid = _mm256_set1_epi32(static_cast<std::int32_t>(fluid_begin));
   __m512d gx = zero, gy = zero, mxx = zero, mxy = zero, myy = zero;
   const std::int32_t* id = nb.first;
   const std::int64_t size = nb.size();
@@ -70,11 +68,9 @@ Vec2 variational_gradient_avx512(const Kernel& kernel, std::int64_t i, IdRange n
     if constexpr (kCorrected) {
       __m512d a[4];
       transpose_half_rows(e, 1, a);
-      const __mmask8 fluid = _mm256_cmpge_epi32_mask(e.ids, first_fluid);
-      const __m512d jxx = a[kRowAxx - 4], jxy = a[kRowAxy - 4], jyy = a[kRowAyy - 4];
-      const __m512d axx = _mm512_add_pd(_mm512_mask_add_pd(jxx, fluid, jxx, ixx), s);
-      const __m512d axy = _mm512_mask_add_pd(jxy, fluid, jxy, ixy);
-      const __m512d ayy = _mm512_add_pd(_mm512_mask_add_pd(jyy, fluid, jyy, iyy), s);
+      const __m512d axx = _mm512_add_pd(_mm512_add_pd(a[kRowAxx - 4], ixx), s);
+      const __m512d axy = _mm512_add_pd(a[kRowAxy - 4], ixy);
+      const __m512d ayy = _mm512_add_pd(_mm512_add_pd(a[kRowAyy - 4], iyy), s);
       gx = _mm512_fmadd_pd(wd, _mm512_fmadd_pd(axx, dx, _mm512_mul_pd(axy, dy)), gx);
       gy = _mm512_fmadd_pd(wd, _mm512_fmadd_pd(axy, dx, _mm512_mul_pd(ayy, dy)), gy);
     } else {

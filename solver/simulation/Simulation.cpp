@@ -724,7 +724,7 @@ void Simulation::correct_band_rate(double dt) {
 #endif
     const auto l = band_rate_rule_.corrector(sums, {s.n[i], t.n[i], dt});
     band_corrector_[i] = l;
-    t.n[i] += dt * (DensityRate_Randles1996::rate(sums, l) - sums.summed());
+    t.n[i] += dt * (DensityRate_Randles1996::band_rate(sums, l) - sums.summed());
   });
 }
 
@@ -862,9 +862,8 @@ void Simulation::correct(double dt) {
              collision_.apply(i, nb, t.x.data(), t.y.data(), t.u.data(), t.v.data(),
                               ps.kind.data()) > 0;
     });
-    // The band's correctors leave the pairs with boundary particles plain: the body's force
-    // has no part of them. (The case parser lets density_rate with the variational gradient
-    // only.)
+    // The body's force reads the band's correctors in the same pairs (A_i of the water next to
+    // it). (The case parser lets density_rate with the variational gradient only.)
     if (body_) body_force_next_ = body_force(scheme, input);
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());

@@ -151,8 +151,7 @@ class Simulation {
   GradientOptions gradient_options() const {
     const DensityRate_Randles1996::Excess excess =
         band_rate_ && band_stamp_ != 0  // 0: no band has been found yet
-            ? DensityRate_Randles1996::Excess{band_axx_.data(),   band_axy_.data(),
-                                              band_ayy_.data(),   scene_.particles.fluid_begin(),
+            ? DensityRate_Randles1996::Excess{band_axx_.data(), band_axy_.data(), band_ayy_.data(),
                                               band_reach_.data(), band_stamp_}
             : DensityRate_Randles1996::Excess{};
     return {tensile_switch_,   renormalisation_,    in_band_.data(),

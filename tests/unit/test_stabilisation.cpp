@@ -270,8 +270,7 @@ void expect_gradient_matches_portable() {
   }
   const auto& lc = lattice();
   const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
-  const DensityRate_Randles1996::Excess excess{axx.data(),  axy.data(), ayy.data(),
-                                               fluid_begin, nullptr,    0};
+  const DensityRate_Randles1996::Excess excess{axx.data(), axy.data(), ayy.data(), nullptr, 0};
   PairRows rows;
   pack_gradient_rows(rows, c.size(), c.x.data(), c.y.data(), q.data(), axx.data(), axy.data(),
                      ayy.data());
@@ -286,9 +285,9 @@ void expect_gradient_matches_portable() {
                   (lc.gradient_correction * lc.n0)
             : ops.gradient_variational(i, c.list.of(i), c.x.data(), c.y.data(), q.data(), ti);
     portable.push_back(p);
-    avx.push_back(variational_gradient_avx512<kCorrected>(Kernel(kRe), i, c.list.of(i), rows.data(),
-                                                          ti, fluid_begin) *
-                  (lc.gradient_correction * lc.n0));
+    avx.push_back(
+        variational_gradient_avx512<kCorrected>(Kernel(kRe), i, c.list.of(i), rows.data(), ti) *
+        (lc.gradient_correction * lc.n0));
     largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   }
   ASSERT_GT(largest, 0.0);
@@ -327,7 +326,7 @@ void expect_hydrostatic_rows_match_portable(bool corrected) {
   // Every particle reached by the band's correctors, or none.
   const std::vector<std::uint32_t> reached(c.x.size(), 1);
   DensityRate_Randles1996::Excess excess{};
-  if (corrected) excess = {axx.data(), axy.data(), ayy.data(), fluid_begin, reached.data(), 1};
+  if (corrected) excess = {axx.data(), axy.data(), ayy.data(), reached.data(), 1};
   const auto& lc = lattice();
   const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
   PairRows rows;
@@ -1019,23 +1018,34 @@ TEST(DensityRate, TheRenormalisationIsMTimesTheInverseOfTheFlooredMomentMatrix) 
   EXPECT_GT(floored, 0);  // the floor was exercised
 }
 
-TEST(DensityRate, ABoundaryParticleWithinReOrAStruckOneKeepsL_I) {
-  // The bottom two rows are boundary particles (laid on the wall's lattice): the rows above
-  // them keep L = I; the particle of the top row, 5 DL above them, does not.
-  Cloud c = block(15, 8);
+TEST(DensityRate, ABoundaryParticleWithinReKeepsTheSummedRateAndItsCorrector) {
+  // The bottom two rows are boundary particles (laid on the wall's lattice), the top row (6) the
+  // surface. Row 4 has a boundary particle within re (3 DL) and its kernel cut by the surface:
+  // it gets its corrector (for the force) and keeps the summed rate. Row 5 has no boundary
+  // particle within re: its rate is the corrected one, which reads the trough's flow (div u = 0)
+  // as none.
+  Cloud c = block(15, 7);
   const auto rule = rate_rule();
   const double n0 = lattice().n0;
   const std::int64_t fluid_begin = 2 * 15;
-  const auto low = rate_sums(c, at(7, 3, 15), -2.0, 0.0, 0.0, 2.0, fluid_begin);
+  const auto low = rate_sums(c, at(7, 4, 15), -2.0, 0.0, 0.0, 2.0, fluid_begin);
   EXPECT_TRUE(low.boundary);
-  EXPECT_TRUE(rule.corrector(low, calm()).identity());
-  const auto top = rate_sums(c, at(7, 7, 15), -2.0, 0.0, 0.0, 2.0, fluid_begin);
+  const auto low_l = rule.corrector(low, calm());
+  EXPECT_FALSE(low_l.identity());
+  EXPECT_EQ(DensityRate_Randles1996::band_rate(low, low_l), low.summed());
+  const auto mid = rate_sums(c, at(7, 5, 15), -2.0, 0.0, 0.0, 2.0, fluid_begin);
+  EXPECT_FALSE(mid.boundary);
+  const auto mid_l = rule.corrector(mid, calm());
+  EXPECT_GT(mid.summed(), 0.05 * rule.m);
+  // Rounding of ~30 terms of order m: 1e-12 of m.
+  EXPECT_NEAR(DensityRate_Randles1996::band_rate(mid, mid_l), 0.0, 1e-12 * rule.m);
+  const auto top = rate_sums(c, at(7, 6, 15), -2.0, 0.0, 0.0, 2.0, fluid_begin);
   EXPECT_FALSE(top.boundary);
   EXPECT_FALSE(rule.corrector(top, calm()).identity());
   // Struck, each way: the top row squeezed across the surface at 80 /s (a sheet landing), its
   // summed rate above sqrt(g / DL) n0 = 31 n0 per second; the prediction's n rising faster
   // than that; n already 0.4 % above n0. Just under each threshold the trough is corrected.
-  const auto hit = rate_sums(c, at(7, 7, 15), 0.0, 0.0, 0.0, -80.0);
+  const auto hit = rate_sums(c, at(7, 6, 15), 0.0, 0.0, 0.0, -80.0);
   EXPECT_GT(hit.summed(), rule.struck_rate * n0);
   EXPECT_TRUE(rule.corrector(hit, calm()).identity());
   const double dt = 1e-4, limit = rule.struck_rate * n0 * dt;
@@ -1080,7 +1090,7 @@ TEST(DensityRate, ThePressureDoesNoWorkTheNumberDensitiesDoNotStore) {
     axy[j] = q[j] * l[j].xy;
     ayy[j] = q[j] * (l[j].yy - 1.0);
   }
-  const DensityRate_Randles1996::Excess excess{axx.data(), axy.data(), ayy.data(), 0};
+  const DensityRate_Randles1996::Excess excess{axx.data(), axy.data(), ayy.data()};
   std::vector<double> gx(c.x.size()), gy(c.x.size());
   for (std::int64_t i = 0; i < c.size(); ++i) {
     const Vec2 g = DensityRate_Randles1996::gathered_gradient(
@@ -1110,6 +1120,68 @@ TEST(DensityRate, ThePressureDoesNoWorkTheNumberDensitiesDoNotStore) {
     plain += (c.u[i] * g.x + c.v[i] * g.y) / (lc.gradient_correction * lc.n0);
   }
   EXPECT_GT(std::abs(plain - stored), 1e-3 * std::abs(stored));
+}
+
+TEST(DensityRate, TheWallHoldsTheBandsStress) {
+  // Still water in a box on the lattice: walls three columns thick at both sides, three rows
+  // under the water, as high as the water (7 rows). Every fluid particle's kernel holds the
+  // lattice up to the surface, so P, L and A = q (L - I) (q hydrostatic) depend on the row
+  // alone: the band's stress is uniform along the surface up to the walls and pushes no
+  // particle along it that has no boundary particle within re; the particles next to a wall
+  // press on it (their pairs with it carry A_i). Had the particles within re of a wall kept
+  // L = I (the rule before 2026-12-07), the stress would end inside the water and push the
+  // particles there along the surface.
+  Cloud c;
+  const int nx = 21, ny = 10, wall = 3;
+  auto is_wall = [&](int i, int j) { return i < wall || i >= nx - wall || j < wall; };
+  for (const bool boundary : {true, false}) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        if (is_wall(i, j) == boundary) c.add(i * kDl, j * kDl);
+      }
+    }
+  }
+  c.build();
+  const std::int64_t fluid_begin = 2 * wall * ny + (nx - 2 * wall) * wall;
+  const double top = (ny - 1) * kDl, n0 = lattice().n0;
+  const auto rule = rate_rule();
+  std::vector<double> axx(c.x.size()), axy(c.x.size()), ayy(c.x.size());
+  std::vector<char> near_wall(c.x.size());
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    const auto s = DensityRate_Randles1996::sums(Kernel(kRe), i, c.list.of(i), c.x.data(),
+                                                 c.y.data(), c.u.data(), c.v.data(), fluid_begin);
+    near_wall[i] = s.boundary;
+    const auto l = rule.corrector(s, calm());
+    const double q = 1000.0 * 9.81 * (top - c.y[i]) / (n0 * n0);
+    axx[i] = q * (l.xx - 1.0);
+    axy[i] = q * l.xy;
+    ayy[i] = q * (l.yy - 1.0);
+  }
+  auto push = [&](std::int64_t i) {
+    const DensityRate_Randles1996::Excess a{axx.data(), axy.data(), ayy.data()};
+    return DensityRate_Randles1996::gathered_excess(Kernel(kRe), i, c.list.of(i), c.x.data(),
+                                                    c.y.data(), a);
+  };
+  double across = 0.0, along_free = 0.0, along_wall = 0.0;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    const Vec2 g = push(i);
+    across = std::max(across, std::abs(g.y));
+    (near_wall[i] ? along_wall : along_free) =
+        std::max(near_wall[i] ? along_wall : along_free, std::abs(g.x));
+  }
+  ASSERT_GT(across, 0.0);
+  // Rounding of ~40 pair terms: 1e-12 of the stress's push across the surface.
+  EXPECT_LT(along_free, 1e-12 * across);
+  EXPECT_GT(along_wall, 0.05 * across);
+  // The rule before: A = 0 within re of a wall.
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    if (near_wall[i]) axx[i] = axy[i] = ayy[i] = 0.0;
+  }
+  double along_before = 0.0;
+  for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
+    if (!near_wall[i]) along_before = std::max(along_before, std::abs(push(i).x));
+  }
+  EXPECT_GT(along_before, 0.05 * across);
 }
 
 TEST(PressureBound, ZeroClampsAndTheOthersKeepDownToTheFloor) {
