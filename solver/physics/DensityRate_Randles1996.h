@@ -53,7 +53,7 @@
 ///   thin layer sliding along it, and with its rate corrected too (the wall's pairs plain,
 ///   central, or left out of P) the layer under case I's trough opened more (the short run's
 ///   largest cavity 0.16-0.19 against 0.05 cm2). So near a boundary the pressure's work is not
-///   what the number densities store (below); the acoustic and standing-wave benchmarks measure
+///   what the number densities store (above); the acoustic and standing-wave benchmarks measure
 ///   what that costs.
 ///
 ///   L = I (the summed rate and the plain force) where the particle is struck. The correction is
