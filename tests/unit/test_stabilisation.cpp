@@ -1166,8 +1166,8 @@ TEST(DensityRate, TheWallHoldsTheBandsStress) {
   for (std::int64_t i = fluid_begin; i < c.size(); ++i) {
     const Vec2 g = push(i);
     across = std::max(across, std::abs(g.y));
-    (near_wall[i] ? along_wall : along_free) =
-        std::max(near_wall[i] ? along_wall : along_free, std::abs(g.x));
+    double& along = near_wall[i] ? along_wall : along_free;
+    along = std::max(along, std::abs(g.x));
   }
   ASSERT_GT(across, 0.0);
   // Rounding of ~40 pair terms: 1e-12 of the stress's push across the surface.
