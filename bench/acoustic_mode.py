@@ -77,6 +77,8 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
     ("gradient_renormalisation khayyer2011-deviatoric, c0 x 2", 20,
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
+    ("gradient_renormalisation khayyer2011-strain", 10,
+     {"gradient_renormalisation": '"khayyer2011-strain"'}),
 ]
 
 

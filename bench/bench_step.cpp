@@ -17,6 +17,8 @@
 //   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
 // - DamBreak_Deviatoric, CaseI_Deviatoric, DamBreakSurge_Deviatoric: the same with
 //   "khayyer2011-deviatoric" (one thread; the surge at DL 5 mm).
+// - DamBreak_Strain, CaseI_Strain, DamBreakSurge_Strain: the same with "khayyer2011-strain" (its
+//   rest shapes read and advanced in the gradient's pass).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
@@ -58,7 +60,7 @@ namespace {
 
 using namespace wcmps;
 
-enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, BandRate };
+enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, Strain, BandRate };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
                                  Scheme scheme = Scheme::Defaults, double start_time = 0.0) {
@@ -72,6 +74,7 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
   if (scheme == Scheme::Deviatoric) {
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
+  if (scheme == Scheme::Strain) spec.gradient_renormalisation = GradientRenormalisation::Strain;
   if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
@@ -144,6 +147,15 @@ void CaseI_Deviatoric(benchmark::State& state) {
 }
 void DamBreakSurge_Deviatoric(benchmark::State& state) {
   step(state, "dambreak", Scheme::Deviatoric, kSurge);
+}
+void DamBreak_Strain(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Strain);
+}
+void CaseI_Strain(benchmark::State& state) {
+  step(state, "caseI", Scheme::Strain);
+}
+void DamBreakSurge_Strain(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Strain, kSurge);
 }
 void DamBreak_BandRate(benchmark::State& state) {
   step(state, "dambreak", Scheme::BandRate);
@@ -231,6 +243,21 @@ BENCHMARK(CaseI_Deviatoric)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreakSurge_Deviatoric)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_Strain)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_Strain)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_Strain)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

@@ -89,7 +89,9 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("density_rate summed (the default until 2026-12-04, later)",
             {"density_rate": '"summed"'}),
            ("gradient_renormalisation khayyer2011-deviatoric",
-            {"gradient_renormalisation": '"khayyer2011-deviatoric"'})]
+            {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
+           ("gradient_renormalisation khayyer2011-strain",
+            {"gradient_renormalisation": '"khayyer2011-strain"'})]
 
 
 def case_text(physics, dl):

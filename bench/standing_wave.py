@@ -10,7 +10,9 @@ Runs the case with each scheme of SCHEMES below (rows 0-3: the new default, the 
 for where the loss comes from; rows 13-16 the artificial viscosity's alpha; rows 20-23 the
 renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the kernel radius and
 the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised;
-rows 41-42 the hydrostatic gradient read through M's deviatoric part), reads gauges.csv,
+rows 41-42 the hydrostatic gradient read through M's deviatoric part, rows 43-44 through the
+change of it from each particle's rest shape, rows 45-46 with that shape's memory shorter and
+longer), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -114,6 +116,17 @@ SCHEMES = [
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
     ("new, deviatoric hydrostatic gradient, artificial viscosity 0",
      {"gradient_renormalisation": '"khayyer2011-deviatoric"', "artificial_viscosity": "0.0"}),
+    # 43-44: the same read against each particle's rest shape (2026-12-07)
+    ("new, deviatoric hydrostatic gradient of the shape's change",
+     {"gradient_renormalisation": '"khayyer2011-strain"'}),
+    ("new, deviatoric hydrostatic gradient of the shape's change, artificial viscosity 0",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.0"}),
+    # 45-46: its memory a fifth and four times as long (the filter's phase lead 1 / (omega tau)
+    # five times and a quarter of the default's): what of the loss the filter's phase makes
+    ("new, the shape's change, strain_memory 1 s",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "1.0"}),
+    ("new, the shape's change, strain_memory 20 s",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "20.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -40,6 +40,8 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
     ("gradient_renormalisation khayyer2011-hydrostatic",
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
+    ("gradient_renormalisation khayyer2011-strain",
+     {"gradient_renormalisation": '"khayyer2011-strain"'}),
 ]
 
 

@@ -1,6 +1,7 @@
 #include "particles/ParticleSet.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "core/Parallel.h"
@@ -25,6 +26,8 @@ void ParticleState::swap(ParticleState& o) noexcept {
   shift_u.swap(o.shift_u);
   shift_v.swap(o.shift_v);
   struck_n.swap(o.struck_n);
+  rest_a.swap(o.rest_a);
+  rest_b.swap(o.rest_b);
   p.swap(o.p);
   n.swap(o.n);
   surface.swap(o.surface);
@@ -39,6 +42,13 @@ void ParticleSet::track_shift() {
 
 void ParticleSet::track_strikes() {
   for (ParticleState* s : {&now, &next}) s->struck_n.assign(kind.size(), 0.0);
+}
+
+void ParticleSet::track_rest_shape() {
+  for (ParticleState* s : {&now, &next}) {
+    s->rest_a.assign(kind.size(), std::numeric_limits<double>::quiet_NaN());
+    s->rest_b.assign(kind.size(), std::numeric_limits<double>::quiet_NaN());
+  }
 }
 
 ParticleSet::ParticleSet(const std::vector<ParticleSeed>& walls,
@@ -109,6 +119,12 @@ void ParticleSet::reorder_fluid(const std::vector<std::int32_t>& order) {
   if (!now.struck_n.empty()) {
     parallel_for(0, size() - b,
                  [&](std::int64_t k) { next.struck_n[b + k] = now.struck_n[order[k]]; });
+  }
+  if (!now.rest_a.empty()) {
+    parallel_for(0, size() - b, [&](std::int64_t k) {
+      next.rest_a[b + k] = now.rest_a[order[k]];
+      next.rest_b[b + k] = now.rest_b[order[k]];
+    });
   }
   now.swap(next);
   std::copy(id_scratch_.begin() + b, id_scratch_.end(), id.begin() + b);

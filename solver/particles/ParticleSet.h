@@ -32,6 +32,11 @@ struct ParticleState {
   /// strike found the particle, 0 when it is not struck. Empty unless
   /// ParticleSet::track_strikes() was called; resize() leaves it alone.
   std::vector<double> struck_n;
+  /// The rest shape of gradient_renormalisation = "khayyer2011-strain"
+  /// (physics/GradientRenormalisation_Khayyer2011.h): ((M_xx - M_yy) / 2, M_xy) averaged along
+  /// the particle's path, NaN where it has none. Empty unless ParticleSet::track_rest_shape() was
+  /// called; resize() leaves them alone.
+  std::vector<double> rest_a, rest_b;
   std::vector<double> p;              ///< pressure (Pa)
   std::vector<double> n;              ///< number density at the predicted positions (-)
   std::vector<std::uint8_t> surface;  ///< 1 for free-surface particles
@@ -72,6 +77,8 @@ class ParticleSet {
   void track_shift();
   /// Gives both states the memory of strikes (ParticleState::struck_n), none.
   void track_strikes();
+  /// Gives both states the rest shapes (ParticleState::rest_a), none (NaN).
+  void track_rest_shape();
 
   ParticleState now;   ///< the state at the current time
   ParticleState next;  ///< scratch for the step in progress

@@ -60,7 +60,26 @@
 /// of it in the rows under the surface and steady in time; docs/validation.md, "The shape's error
 /// alone"): not the default.
 ///
-/// All three forms are left out where the kernel is not full or M_i does not measure the flow: in
+/// "khayyer2011-strain" (this project's form, 2026-12-07): the deviatoric form read against each
+/// particle's rest shape. The shape a settled arrangement has and keeps is not a strain of the
+/// water: it is the disorder the particles settled into, and the variational gradient's balance
+/// of the water's weight already holds it (still water is still with no correction at all).
+/// Corrected particle by particle, its noise is a body force that is not the gradient of anything
+/// and stirs the still water (the deviatoric form's steady circulation). This form corrects only
+/// the shape's change from its rest shape S_i, the particle's shape averaged over the time
+/// strain_memory tau along its path:
+///
+///     -(D_i - S_i) rho g,   D_i = M_i - (tr M_i / 2) I,   dS_i/dt = (D_i - S_i) / tau,
+///
+/// so a shape that lasts longer than tau is taken as the rest state, and a wave's strain, which
+/// comes and goes with its period T, is read as the deviatoric form reads it when 2 pi tau >> T
+/// (the filter passes omega tau / (1 + omega^2 tau^2)^(1/2) of it, 0.999 at T = 1.2 s, tau = 5 s;
+/// the rest of it, a phase lead of 1 / (omega tau), turns a share of the correction into a
+/// damping). While the water settles S_i is D_i (the settled arrangement is the rest state), and a
+/// particle that enters the corrected water (from the band, a wall's reach, or a crushed
+/// neighbourhood) starts from its own shape: no correction jumps on.
+///
+/// All four forms are left out where the kernel is not full or M_i does not measure the flow: in
 /// the free-surface band (the surface particles and those within re of one,
 /// Simulation::find_surface_band), where M_i loses a direction; for fluid with a boundary particle
 /// in its list, whose M_i counts the wall's rows, laid on the wall's own uncompressed lattice (with
@@ -77,7 +96,7 @@
 
 namespace wcmps {
 
-enum class GradientRenormalisation { None, Khayyer2011, Hydrostatic, Deviatoric };
+enum class GradientRenormalisation { None, Khayyer2011, Hydrostatic, Deviatoric, Strain };
 
 inline constexpr SchemeEntry<GradientRenormalisation> kGradientRenormalisationSchemes[] = {
     {"none", GradientRenormalisation::None, ""},
@@ -90,6 +109,23 @@ inline constexpr SchemeEntry<GradientRenormalisation> kGradientRenormalisationSc
     {"khayyer2011-deviatoric", GradientRenormalisation::Deviatoric,
      "the deviatoric part of the corrective matrix of Khayyer & Gotoh (2011) applied to the "
      "hydrostatic gradient rho g alone (this project's form)"},
+    {"khayyer2011-strain", GradientRenormalisation::Strain,
+     "the deviatoric part of the corrective matrix of Khayyer & Gotoh (2011) applied to the "
+     "hydrostatic gradient rho g as it changes from each particle's rest shape (this project's "
+     "form)"},
+};
+
+/// "khayyer2011-strain": each fluid particle's rest shape S_i = [[a, b], [b, -a]] (the `now`
+/// state's, read) and the next state's (written by the gradient's pass: S_i moved towards D_i by
+/// `rate` = dt / tau, or set to D_i while the water settles). NaN: no rest shape yet (the
+/// particle was not corrected in the last step), taken as D_i. Null: no memory (the body's force
+/// at the start), every S_i taken as D_i.
+struct ShapeMemory {
+  const double* rest_a = nullptr;
+  const double* rest_b = nullptr;
+  double* next_a = nullptr;
+  double* next_b = nullptr;
+  double rate = 0.0;
 };
 
 struct GradientRenormalisation_Khayyer2011 {
@@ -132,6 +168,16 @@ struct GradientRenormalisation_Khayyer2011 {
     const double half_trace = 0.5 * (s.pmxx + s.pmyy);
     return {half_trace * rho_g.x - (s.pmxx * rho_g.x + s.pmxy * rho_g.y),
             half_trace * rho_g.y - (s.pmxy * rho_g.x + s.pmyy * rho_g.y)};
+  }
+
+  /// "khayyer2011-strain": -(D_i - S_i) rho g over the part's terms of M_i, with the part's
+  /// share of S_i (its share of M_i's trace, as in hydrostatic()), S_i = [[a0, b0], [b0, -a0]].
+  /// Zero where M_i is too far from full.
+  static Vec2 strain(const SecondMoments& s, Vec2 rho_g, double a0, double b0) {
+    if (!applies(s)) return {};
+    const double share = (s.pmxx + s.pmyy) / (s.mxx + s.myy);
+    const double a = 0.5 * (s.pmxx - s.pmyy) - share * a0, b = s.pmxy - share * b0;
+    return {-(a * rho_g.x + b * rho_g.y), a * rho_g.y - b * rho_g.x};
   }
 
   /// The hydrostatic or the deviatoric form's term.

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string_view>
 
 #include "core/SchemeTable.h"
@@ -64,7 +65,8 @@ struct PressureGradient_Suzuki2007 {
   static constexpr GradientInput kInput = GradientInput::PressureOverNumberDensitySquared;
   /// The renormalisation that adds a term for rho g ("khayyer2011-hydrostatic", "-deviatoric").
   static constexpr bool kHydrostatic = kRenormalisation == GradientRenormalisation::Hydrostatic ||
-                                       kRenormalisation == GradientRenormalisation::Deviatoric;
+                                       kRenormalisation == GradientRenormalisation::Deviatoric ||
+                                       kRenormalisation == GradientRenormalisation::Strain;
   /// Whether the AVX-512 pass applies (`rows`): the gradient not renormalised, or with a
   /// hydrostatic form (whose M the pass sums beside the gradient).
   static constexpr bool kRows = kRenormalisation == GradientRenormalisation::None || kHydrostatic;
@@ -79,6 +81,8 @@ struct PressureGradient_Suzuki2007 {
   /// With density_rate = "randles1996": the band's correctors q (L - I), gathered by every
   /// fluid particle (DensityRate_Randles1996::gathered_gradient); unset (xx null) otherwise.
   DensityRate_Randles1996::Excess excess;
+  /// With "khayyer2011-strain": the particles' rest shapes, read and advanced.
+  ShapeMemory memory{};
   /// The rows of the AVX-512 pass (PressureGradientAvx512.h), packed for this step's r*, q and
   /// correctors; null: the portable loops.
   const PairRow* rows = nullptr;
@@ -97,6 +101,7 @@ struct PressureGradient_Suzuki2007 {
   Vec2 gradient_part(const MpsOperators& ops, std::int64_t i, IdRange nb, IdRange part,
                      const double* x, const double* y, const double* p_over_n2) const {
     if constexpr (kRenormalisation != GradientRenormalisation::None) {
+      const bool whole = part.first == nb.first && part.last == nb.last;
       if (!(band && band[i]) && !(near_wall && near_wall[i])) {
         using R = GradientRenormalisation_Khayyer2011;
         const double c = ops.gradient_correction() * ops.n0();
@@ -108,20 +113,22 @@ struct PressureGradient_Suzuki2007 {
           return Vec2{c * (d.x + t * s.sx), c * (d.y + t * s.sy)} + band_excess(ops, i, part, x, y);
         } else {
 #if WCMPS_PAIRS_AVX512
-          if (rows && part.first == nb.first && part.last == nb.last) {
+          if (rows && whole) {
             double m[3];
             const Vec2 g =
                 excess.reaches(i)
                     ? variational_gradient_avx512<true, true>(ops.kernel(), i, nb, rows, ti, m)
                     : variational_gradient_avx512<false, true>(ops.kernel(), i, nb, rows, ti, m);
-            return g * c + R::hydrostatic_term<kRenormalisation>(
-                               ops.whole_moments(m[0], m[1], m[2]), rho_g);
+            return g * c + shape_term(i, ops.whole_moments(m[0], m[1], m[2]), true);
           }
 #endif
           const VariationalMoments s = ops.variational_moments(i, nb, part, x, y, p_over_n2, ti);
-          const Vec2 h = R::hydrostatic_term<kRenormalisation>(s.m, rho_g);
+          const Vec2 h = shape_term(i, s.m, whole);
           return Vec2{c * s.gx + h.x, c * s.gy + h.y} + band_excess(ops, i, part, x, y);
         }
+      }
+      if constexpr (kRenormalisation == GradientRenormalisation::Strain) {
+        if (whole && memory.next_a) forget_shape(i);
       }
     }
 #if WCMPS_PAIRS_AVX512
@@ -139,6 +146,36 @@ struct PressureGradient_Suzuki2007 {
       return g * (ops.gradient_correction() * ops.n0());
     }
     return ops.gradient_variational(i, part, x, y, p_over_n2, own(p_over_n2, i));
+  }
+  /// The hydrostatic forms' term for i with M_i = m; "khayyer2011-strain" also advances i's
+  /// rest shape when the sum took the whole neighbourhood.
+  Vec2 shape_term(std::int64_t i, const SecondMoments& m, bool whole) const {
+    using R = GradientRenormalisation_Khayyer2011;
+    if constexpr (kRenormalisation == GradientRenormalisation::Strain) {
+      if (!R::applies(m)) {
+        if (whole && memory.next_a) forget_shape(i);
+        return {};
+      }
+      const double a = 0.5 * (m.mxx - m.myy), b = m.mxy;
+      double a0 = memory.rest_a ? memory.rest_a[i] : a;
+      double b0 = memory.rest_b ? memory.rest_b[i] : b;
+      if (std::isnan(a0)) {
+        a0 = a;
+        b0 = b;
+      }
+      if (whole && memory.next_a) {
+        memory.next_a[i] = a0 + memory.rate * (a - a0);
+        memory.next_b[i] = b0 + memory.rate * (b - b0);
+      }
+      return R::strain(m, rho_g, a0, b0);
+    } else {
+      return R::hydrostatic_term<kRenormalisation>(m, rho_g);
+    }
+  }
+  /// "khayyer2011-strain": i is not corrected in this step, and has no rest shape after it.
+  void forget_shape(std::int64_t i) const {
+    memory.next_a[i] = std::numeric_limits<double>::quiet_NaN();
+    memory.next_b[i] = std::numeric_limits<double>::quiet_NaN();
   }
   /// What the band's correctors add to a renormalised particle's gradient.
   Vec2 band_excess(const MpsOperators& ops, std::int64_t i, IdRange part, const double* x,
@@ -169,6 +206,7 @@ struct GradientOptions {
   const std::uint8_t* near_wall = nullptr;  ///< fluid near a boundary, not renormalised
   Vec2 rho_g;                               ///< rho0 g
   DensityRate_Randles1996::Excess excess;   ///< the band's correctors (density_rate)
+  ShapeMemory memory{};                     ///< the rest shapes ("khayyer2011-strain")
 };
 
 /// Calls f with the variational gradient renormalised by kForm, with or without the switch (which
@@ -176,11 +214,11 @@ struct GradientOptions {
 template <GradientRenormalisation kForm, class F>
 decltype(auto) with_renormalised_gradient(const GradientOptions& o, F&& f) {
   if (o.tensile_switch) {
-    return f(
-        PressureGradient_Suzuki2007<true, kForm>{o.band, o.band, o.near_wall, o.rho_g, o.excess});
+    return f(PressureGradient_Suzuki2007<true, kForm>{o.band, o.band, o.near_wall, o.rho_g,
+                                                      o.excess, o.memory});
   }
-  return f(
-      PressureGradient_Suzuki2007<false, kForm>{nullptr, o.band, o.near_wall, o.rho_g, o.excess});
+  return f(PressureGradient_Suzuki2007<false, kForm>{nullptr, o.band, o.near_wall, o.rho_g,
+                                                     o.excess, o.memory});
 }
 
 /// Calls f(Scheme{}) with the scheme type that `s` names, the variational gradient with the
@@ -201,12 +239,14 @@ decltype(auto) with_pressure_gradient(PressureGradientScheme s, const GradientOp
           return with_renormalised_gradient<R::Hydrostatic>(o, f);
         case R::Deviatoric:
           return with_renormalised_gradient<R::Deviatoric>(o, f);
+        case R::Strain:
+          return with_renormalised_gradient<R::Strain>(o, f);
         case R::None:
           break;
       }
       if (o.tensile_switch)
-        return f(PressureGradient_Suzuki2007<true>{exempt, nullptr, nullptr, {}, o.excess});
-      return f(PressureGradient_Suzuki2007<false>{nullptr, nullptr, nullptr, {}, o.excess});
+        return f(PressureGradient_Suzuki2007<true>{exempt, nullptr, nullptr, {}, o.excess, {}});
+      return f(PressureGradient_Suzuki2007<false>{nullptr, nullptr, nullptr, {}, o.excess, {}});
     case PressureGradientScheme::Koshizuka1998Min:
       break;
   }

@@ -634,6 +634,14 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                  "renormalises the variational gradient only: it needs pressure_gradient = "
                  "\"suzuki2007-variational\"");
     }
+    if (const auto tau = r.optional_number("strain_memory", 0.0, kInf, true)) {
+      if (c.gradient_renormalisation != GradientRenormalisation::Strain) {
+        r.fail_key("strain_memory",
+                   "is the rest shape's memory of gradient_renormalisation = "
+                   "\"khayyer2011-strain\" only");
+      }
+      c.strain_memory = *tau;
+    }
     // Its default applies where it can: with the summed n or another gradient it is "summed",
     // and only an explicit "randles1996" there is an error.
     const bool rate_applies = c.number_density == NumberDensityScheme::Continuity &&

@@ -209,6 +209,11 @@ struct CaseSpec {
   /// ("khayyer2011") exactly on a strained arrangement, away from the surface band and the walls
   /// (physics/GradientRenormalisation_Khayyer2011.h); variational gradient only.
   GradientRenormalisation gradient_renormalisation = GradientRenormalisation::None;
+  /// "khayyer2011-strain": tau, the time over which a particle's shape is averaged into its rest
+  /// shape (s). A wave of period T keeps the correction when 2 pi tau >> T; 5 s passes 0.999 of
+  /// a period of 1.2 s (the standing wave of cases/standing-wave) and lets the still tank's shape
+  /// become its rest state within its first seconds of settling.
+  double strain_memory = 5.0;
   /// The evolved n's rate in the free-surface band: "randles1996" (the kernel gradient
   /// renormalised by the kernel's moments in the rate and the variational gradient together:
   /// physics/DensityRate_Randles1996.h; the cavity behind the block a third to a seventh) or

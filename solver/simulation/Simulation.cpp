@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
@@ -70,6 +71,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
       pressure_bound_(PressureBound::make(spec.negative_pressure, spec.pressure_floor)),
       tensile_switch_(spec.negative_pressure == NegativePressure::Sun2018Switch),
       renormalisation_(spec.gradient_renormalisation),
+      strain_memory_(spec.strain_memory),
       density_scheme_(spec.number_density),
       continuity_(NumberDensity_Jandaghian2020::make(spec.density_diffusion, spec.re(),
                                                      scene_.sound_speed, scene_.lattice.lambda,
@@ -135,6 +137,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   }
   if (shift_in_continuity_) ps.track_shift();
   if (surface_cap_) ps.track_strikes();
+  if (renormalisation_ == GradientRenormalisation::Strain) ps.track_rest_shape();
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) {
     fills_.assign(static_cast<std::size_t>(ps.size()), 0);
     std::fill(fills_.begin() + ps.fluid_begin(), fills_.end(), 1);
@@ -373,6 +376,7 @@ void Simulation::save(StateWriter& out) const {
   out.field("velocity", {s.u.data(), s.v.data()}, n);
   if (shift_in_continuity_) out.field("shift_velocity", {s.shift_u.data(), s.shift_v.data()}, n);
   if (surface_cap_) out.field("struck_number_density", {s.struck_n.data()}, n);
+  if (!s.rest_a.empty()) out.field("rest_shape", {s.rest_a.data(), s.rest_b.data()}, n);
   out.field("pressure", {s.p.data()}, n);
   out.field("number_density", {s.n.data()}, n);
   out.field("free_surface", s.surface.data(), n);
@@ -413,6 +417,14 @@ void Simulation::load(StateReader& in) {
     in.field("struck_number_density", {s.struck_n.data()}, n);
   } else if (surface_cap_) {
     std::fill(s.struck_n.begin(), s.struck_n.end(), 0.0);
+  }
+  // And the rest shapes of "khayyer2011-strain" (a checkpoint without them: none, each particle
+  // starts from its own shape).
+  if (!s.rest_a.empty() && in.has("rest_shape")) {
+    in.field("rest_shape", {s.rest_a.data(), s.rest_b.data()}, n);
+  } else if (!s.rest_a.empty()) {
+    std::fill(s.rest_a.begin(), s.rest_a.end(), std::numeric_limits<double>::quiet_NaN());
+    std::fill(s.rest_b.begin(), s.rest_b.end(), std::numeric_limits<double>::quiet_NaN());
   }
   in.field("pressure", {s.p.data()}, n);
   in.field("number_density", {s.n.data()}, n);
@@ -835,7 +847,13 @@ void Simulation::correct(double dt) {
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   const double c = -dt / density_;
-  with_pressure_gradient(gradient_scheme_, gradient_options(), [&](auto scheme) {
+  GradientOptions options = gradient_options();
+  if (!ps.now.rest_a.empty()) {
+    // While the water settles its arrangement is the rest state: S_i = D_i.
+    options.memory = {ps.now.rest_a.data(), ps.now.rest_b.data(), t.rest_a.data(), t.rest_b.data(),
+                      settling_ ? 1.0 : std::min(1.0, dt / strain_memory_)};
+  }
+  with_pressure_gradient(gradient_scheme_, options, [&](auto scheme) {
     using Scheme = decltype(scheme);
     const double* input = gradient_input<Scheme>();
     if constexpr (Scheme::kInput == GradientInput::PressureOverNumberDensitySquared) {

@@ -154,8 +154,8 @@ class Simulation {
             ? DensityRate_Randles1996::Excess{band_axx_.data(), band_axy_.data(), band_ayy_.data(),
                                               band_reach_.data(), band_stamp_}
             : DensityRate_Randles1996::Excess{};
-    return {tensile_switch_,   renormalisation_,    in_band_.data(),
-            near_wall_.data(), gravity_ * density_, excess};
+    return {tensile_switch_,     renormalisation_, in_band_.data(), near_wall_.data(),
+            gravity_ * density_, excess,           ShapeMemory{}};
   }
   bool in_body(std::int64_t j) const {
     const auto& b = body_->particles();
@@ -176,6 +176,7 @@ class Simulation {
   PressureBound pressure_bound_;
   bool tensile_switch_;
   GradientRenormalisation renormalisation_;
+  double strain_memory_;  // tau of "khayyer2011-strain" (s)
   NumberDensityScheme density_scheme_;
   NumberDensity_Jandaghian2020 continuity_;
   // The evolved n's rate and its partner in the pressure gradient in the surface band

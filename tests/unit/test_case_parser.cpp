@@ -168,6 +168,14 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "gradient_renormalisation = \"khayyer2011\"\n",
                19, "renormalises the variational gradient only");
   expect_error(test::minimal_case_text() +
+                   "\n[physics]\ngradient_renormalisation = \"khayyer2011-deviatoric\"\n"
+                   "strain_memory = 5.0\n",
+               19, "\"khayyer2011-strain\" only");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\ngradient_renormalisation = \"khayyer2011-strain\"\n"
+                   "strain_memory = 0.0\n",
+               19, "strain_memory: value 0 is out of range (0, inf)");
+  expect_error(test::minimal_case_text() +
                    "\n[physics]\nnumber_density = \"summation\"\n"
                    "density_rate = \"randles1996\"\n",
                19, "corrects the rate of an evolved number density only");

@@ -134,6 +134,8 @@ std::string state_bytes(const Simulation& sim) {
   add(s.shift_u);
   add(s.shift_v);
   add(s.struck_n);
+  add(s.rest_a);
+  add(s.rest_b);
   add(s.surface);
   add(sim.particles().id);
   const double t = sim.time();
@@ -147,12 +149,16 @@ std::string state_bytes(const Simulation& sim) {
 
 /// The restart case of the command-line tests (a free block, gauges, settling): stop in the
 /// middle of settling and in the middle of the run, continue in a new Simulation.
-void expect_continued_identical(bool shift_in_continuity) {
+void expect_continued_identical(bool shift_in_continuity, GradientRenormalisation renormalisation =
+                                                              GradientRenormalisation::None) {
   CaseSpec spec = parse_case_file(test::source_path("tests/cli/restart.toml"));
   spec.end_time = 0.03;
   spec.shifting_in_continuity = shift_in_continuity;
-  const fs::path dir = test::scratch_dir(shift_in_continuity ? "checkpoint_simulation_shift"
-                                                             : "checkpoint_simulation");
+  spec.gradient_renormalisation = renormalisation;
+  const fs::path dir = test::scratch_dir(renormalisation != GradientRenormalisation::None
+                                             ? "checkpoint_simulation_strain"
+                                         : shift_in_continuity ? "checkpoint_simulation_shift"
+                                                               : "checkpoint_simulation");
   CheckpointStore store(dir, 2);
 
   Simulation reference(spec, build_scene(spec));
@@ -198,6 +204,12 @@ TEST(Checkpoint, AContinuedSimulationIsIdenticalToAnUninterruptedOne) {
 TEST(Checkpoint, AContinuedSimulationFollowingTheShiftIsIdentical) {
   // The shift's velocities of the last step are part of the state the next step reads.
   expect_continued_identical(true);
+}
+
+TEST(Checkpoint, AContinuedSimulationWithRestShapesIsIdentical) {
+  // "khayyer2011-strain" corrects each particle's shape against its rest shape, which the
+  // checkpoint carries (a restart that began every particle from its own shape would differ).
+  expect_continued_identical(false, GradientRenormalisation::Strain);
 }
 
 /// Records frame times; writes checkpoints of the simulation and the run's figures.

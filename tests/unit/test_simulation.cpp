@@ -108,7 +108,7 @@ TEST(Simulation, TheGradientRenormalisationActsInTheStep) {
   const Vec2 g{0.0, -9.81};
   const ParticleState plain = run(GradientRenormalisation::None, g, 100);
   for (const auto r : {GradientRenormalisation::Khayyer2011, GradientRenormalisation::Hydrostatic,
-                       GradientRenormalisation::Deviatoric}) {
+                       GradientRenormalisation::Deviatoric, GradientRenormalisation::Strain}) {
     const ParticleState s = run(r, g, 100);
     double diff = 0.0;
     for (std::size_t i = 0; i < s.u.size(); ++i)

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <random>
 #include <utility>
@@ -334,8 +335,19 @@ void expect_hydrostatic_rows_match_portable(bool corrected) {
                      ayy.data());
   using G = PressureGradient_Suzuki2007<true, kForm>;
   static_assert(G::kRows);
-  const G portable{nullptr, nullptr, nullptr, {0.0, -9810.0}, excess};
+  G portable{nullptr, nullptr, nullptr, {0.0, -9810.0}, excess};
+  // "khayyer2011-strain": a rest shape for every particle (without one its term is zero), and
+  // the rest shapes each pass writes, compared below.
+  const std::size_t n = c.x.size();
+  std::vector<double> rest_a(n, 0.004), rest_b(n, -0.003);
+  std::vector<double> next_a(n, 0.0), next_b(n, 0.0), avx_next_a(n, 0.0), avx_next_b(n, 0.0);
+  if constexpr (kForm == GradientRenormalisation::Strain) {
+    portable.memory = {rest_a.data(), rest_b.data(), next_a.data(), next_b.data(), 0.1};
+  }
   G avx = portable;
+  if constexpr (kForm == GradientRenormalisation::Strain) {
+    avx.memory = {rest_a.data(), rest_b.data(), avx_next_a.data(), avx_next_b.data(), 0.1};
+  }
   avx.rows = rows.data();
   double largest = 0.0, largest_term = 0.0;
   std::vector<Vec2> a, b;
@@ -356,12 +368,26 @@ void expect_hydrostatic_rows_match_portable(bool corrected) {
     EXPECT_NEAR(b[k].x, a[k].x, 1e-11 * largest) << "particle " << k;
     EXPECT_NEAR(b[k].y, a[k].y, 1e-11 * largest) << "particle " << k;
   }
+  std::size_t advanced = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    // The rest shapes advanced from M's shape (M's 40 terms in another order, of order 1), or
+    // none in both where M is too far from full (the block's edges).
+    EXPECT_EQ(std::isnan(avx_next_a[k]), std::isnan(next_a[k])) << "particle " << k;
+    if (std::isnan(next_a[k])) continue;
+    ++advanced;
+    EXPECT_NEAR(avx_next_a[k], next_a[k], 1e-13) << "particle " << k;
+    EXPECT_NEAR(avx_next_b[k], next_b[k], 1e-13) << "particle " << k;
+  }
+  if constexpr (kForm == GradientRenormalisation::Strain) {
+    EXPECT_GT(advanced, n / 2);
+  }
 }
 
 TEST(PressureGradientAvx512, TheHydrostaticFormsMatchThePortableLoops) {
   for (const bool corrected : {false, true}) {
     expect_hydrostatic_rows_match_portable<GradientRenormalisation::Hydrostatic>(corrected);
     expect_hydrostatic_rows_match_portable<GradientRenormalisation::Deviatoric>(corrected);
+    expect_hydrostatic_rows_match_portable<GradientRenormalisation::Strain>(corrected);
   }
 }
 
@@ -891,8 +917,8 @@ TEST(GradientRenormalisation, TheDeviatoricFormReadsTheShapeAndLeavesTheCompress
   const Vec2 rho_g{0.0, -9810.0};
   using Deviatoric = PressureGradient_Suzuki2007<true, GradientRenormalisation::Deviatoric>;
   using Hydrostatic = PressureGradient_Suzuki2007<true, GradientRenormalisation::Hydrostatic>;
-  const Deviatoric dev{nullptr, nullptr, nullptr, rho_g, {}};
-  const Hydrostatic hyd{nullptr, nullptr, nullptr, rho_g, {}};
+  const Deviatoric dev{nullptr, nullptr, nullptr, rho_g, {}, {}};
+  const Hydrostatic hyd{nullptr, nullptr, nullptr, rho_g, {}, {}};
   const auto i = at(7, 7, 15);
   struct Read {
     Vec2 plain, dev, hyd;
@@ -929,6 +955,75 @@ TEST(GradientRenormalisation, TheDeviatoricFormReadsTheShapeAndLeavesTheCompress
     EXPECT_LT(r.plain.y, 1.02 * rho_g.y);  // M = 1.0215 I
     EXPECT_NEAR(r.hyd.y, rho_g.y, tol);
   }
+}
+
+TEST(GradientRenormalisation, TheStrainFormReadsTheShapesChangeFromItsRestShape) {
+  // A particle settled into a shape (the lattice stretched along x, det = 1) has that shape as its
+  // rest shape: the strain form adds nothing there, and the variational gradient reads the
+  // water's weight as the settled water balances it. Strained from it (sheared as well), the form
+  // adds the deviatoric form's term of the new shape less that of the rest shape. The rest shape
+  // follows the shape at the rate given; a particle the form leaves out has none after the step.
+  const auto& lc = lattice();
+  const MpsOperators ops(kRe, 2, lc.n0, lc.lambda, lc.gradient_correction);
+  const Vec2 rho_g{0.0, -9810.0};
+  using Strain = PressureGradient_Suzuki2007<true, GradientRenormalisation::Strain>;
+  using Deviatoric = PressureGradient_Suzuki2007<true, GradientRenormalisation::Deviatoric>;
+  const Deviatoric dev{nullptr, nullptr, nullptr, rho_g, {}, {}};
+  const auto i = at(7, 7, 15);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double tol = 1e-8 * 9810.0;  // the rounding of ~40 terms
+  struct Read {
+    Vec2 plain, dev, strain;
+  };
+  std::vector<double> rest_a(15 * 15, nan), rest_b(15 * 15, nan);
+  std::vector<double> next_a(15 * 15, 7.0), next_b(15 * 15, 7.0);
+  const auto read = [&](const Cloud& c, double rate, const std::uint8_t* band = nullptr) {
+    const auto nb = c.list.of(i);
+    const auto q = linear_q(c, 5000.0, 0.0, rho_g.y);
+    const Strain g{
+        nullptr, band,
+        nullptr, rho_g,
+        {},      ShapeMemory{rest_a.data(), rest_b.data(), next_a.data(), next_b.data(), rate}};
+    return Read{
+        PressureGradient_Suzuki2007<true>{}.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()),
+        dev.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data()),
+        g.gradient(ops, i, nb, c.x.data(), c.y.data(), q.data())};
+  };
+  // No rest shape yet, and settling (rate 1): the shape becomes the rest shape, nothing added.
+  const Cloud settled = deformed_block(15, 15, 1.03, 0.0, 0.0, 1.0 / 1.03);
+  const Read first = read(settled, 1.0);
+  EXPECT_NEAR(first.strain.x, first.plain.x, tol);
+  EXPECT_NEAR(first.strain.y, first.plain.y, tol);
+  EXPECT_GT(std::abs(first.dev.y - first.plain.y), 0.004 * 9810.0);  // the shape is there
+  const VariationalSums m0 =
+      ops.variational_sums(i, settled.list.of(i), settled.list.of(i), settled.x.data(),
+                           settled.y.data(), linear_q(settled, 0.0, 0.0, 0.0).data());
+  EXPECT_NEAR(next_a[i], 0.5 * (m0.m.mxx - m0.m.myy), 1e-12);
+  EXPECT_NEAR(next_b[i], m0.m.mxy, 1e-12);
+  // The same shape as the rest shape: still nothing added.
+  rest_a = next_a;
+  rest_b = next_b;
+  const Read again = read(settled, 0.1);
+  EXPECT_NEAR(again.strain.x, again.plain.x, tol);
+  EXPECT_NEAR(again.strain.y, again.plain.y, tol);
+  // Sheared from it: the deviatoric term of the new shape less the rest shape's.
+  const Cloud sheared = deformed_block(15, 15, 1.03, 0.12, 0.0, 1.0 / 1.03);
+  const Read r = read(sheared, 0.1);
+  EXPECT_GT(std::abs(r.dev.x - r.plain.x), 0.001 * 9810.0);  // the shear's horizontal push
+  EXPECT_NEAR(r.strain.x - r.plain.x, (r.dev.x - r.plain.x) - (first.dev.x - first.plain.x), tol);
+  EXPECT_NEAR(r.strain.y - r.plain.y, (r.dev.y - r.plain.y) - (first.dev.y - first.plain.y), tol);
+  const VariationalSums m1 =
+      ops.variational_sums(i, sheared.list.of(i), sheared.list.of(i), sheared.x.data(),
+                           sheared.y.data(), linear_q(sheared, 0.0, 0.0, 0.0).data());
+  EXPECT_NEAR(next_a[i], rest_a[i] + 0.1 * (0.5 * (m1.m.mxx - m1.m.myy) - rest_a[i]), 1e-12);
+  EXPECT_NEAR(next_b[i], rest_b[i] + 0.1 * (m1.m.mxy - rest_b[i]), 1e-12);
+  // In the band: the variational gradient, and no rest shape after the step.
+  std::vector<std::uint8_t> band(15 * 15, 0);
+  band[i] = 1;
+  const Read left_out = read(sheared, 0.1, band.data());
+  EXPECT_EQ(left_out.strain.x, left_out.plain.x);
+  EXPECT_EQ(left_out.strain.y, left_out.plain.y);
+  EXPECT_TRUE(std::isnan(next_a[i]) && std::isnan(next_b[i]));
 }
 
 /// The rate's sums of particle i of the cloud under the velocity field u = A r (a_xx ... a_yy).
