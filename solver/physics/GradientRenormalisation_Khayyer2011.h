@@ -73,11 +73,12 @@
 ///
 /// so a shape that lasts longer than tau is taken as the rest state, and a wave's strain, which
 /// comes and goes with its period T, is read as the deviatoric form reads it when 2 pi tau >> T
-/// (the filter passes omega tau / (1 + omega^2 tau^2)^(1/2) of it, 0.999 at T = 1.2 s, tau = 5 s;
-/// the rest of it, a phase lead of 1 / (omega tau), turns a share of the correction into a
-/// damping). While the water settles S_i is D_i (the settled arrangement is the rest state), and a
-/// particle that enters the corrected water (from the band, a wall's reach, or a crushed
-/// neighbourhood) starts from its own shape: no correction jumps on.
+/// (the filter passes omega tau / (1 + omega^2 tau^2)^(1/2) of it, 0.999 at T = 1.2 s, tau = 5 s,
+/// with a phase lead of 1 / (omega tau): a share of the correction in phase with the velocity,
+/// which pushes along it, an anti-damping of about 0.6 % of amplitude per period at tau = 5 s for
+/// the standing wave; docs/method.md). While the water settles S_i is D_i (the settled arrangement
+/// is the rest state), and a particle that enters the corrected water (from the band, a wall's
+/// reach, or a crushed neighbourhood) starts from its own shape: no correction jumps on.
 ///
 /// All four forms are left out where the kernel is not full or M_i does not measure the flow: in
 /// the free-surface band (the surface particles and those within re of one,
