@@ -12,7 +12,7 @@ renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the ke
 the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised;
 rows 41-42 the hydrostatic gradient read through M's deviatoric part, rows 43-44 through the
 change of it from each particle's rest shape, rows 45-46 with that shape's memory shorter and
-longer), reads gauges.csv,
+longer, rows 47-49 with its artificial viscosity's alpha 0.005, 0.01, 0.04), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -127,6 +127,14 @@ SCHEMES = [
      {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "1.0"}),
     ("new, the shape's change, strain_memory 20 s",
      {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "20.0"}),
+    # 47-49: its artificial viscosity's alpha a quarter, half and twice the default's: whether
+    # the loss follows alpha as the walls' drag would (tools/wall_drag_estimate.py)
+    ("new, the shape's change, artificial viscosity 0.005",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.005"}),
+    ("new, the shape's change, artificial viscosity 0.01",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.01"}),
+    ("new, the shape's change, artificial viscosity 0.04",
+     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.04"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81
