@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The artificial viscosity's drag at a wall, and the loss it gives the standing wave: an
-estimate for docs/validation.md ("Where the artificial viscosity's part of the loss comes from").
+estimate for docs/validation.md ("The artificial viscosity's drag at the walls: an estimate").
 
 usage: tools/wall_drag_estimate.py [--alpha 0.02] [--c0 22.15] [--dl 0.01] [--re 3.5]
                                    [--length 1.0] [--depth 0.5]
@@ -13,9 +13,9 @@ particles ahead of it (the approaching pairs; those behind recede and give nothi
 
     a_x = -alpha c0 (re / 2) (2 / n0) sum_j u dx_j^2 W(r_j) / ((r_j^2 + 0.01 h^2) r_j^2),
 
-with W = (1 - r/re)^3 (operators/Kernel.h) and n0 of the square lattice. Summed over the rows (a_x DL each) it is a
-wall stress rho k u: a linear drag, k in m/s. In DL units every sum is a number, so k = alpha
-c0 times a constant of the kernel: it does not depend on DL.
+with W = (1 - r/re)^3 (operators/Kernel.h) and n0 of the square lattice. Summed over the rows
+(a_x DL each) it is a wall stress rho k u: a linear drag, k in m/s. In DL units every sum is a
+number, so k = alpha c0 times a constant of the kernel: it does not depend on DL.
 
 The loss: the first sloshing mode of a tank of length L and depth h, eta = a cos(kx) cos(wt),
 k = pi / L, w^2 = g k tanh(kh), its energy rho g a^2 L / 4 (per unit width). With the linear
