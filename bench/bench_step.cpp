@@ -19,6 +19,8 @@
 //   "khayyer2011-deviatoric" (one thread; the surge at DL 5 mm).
 // - DamBreak_Strain, CaseI_Strain, DamBreakSurge_Strain: the same with "khayyer2011-strain" (its
 //   rest shapes read and advanced in the gradient's pass).
+// - DamBreak_FreeSlip, CaseI_FreeSlip, DamBreakSurge_FreeSlip: the defaults with
+//   artificial_viscosity_walls = "free-slip" (the walls' tangents read in the prediction's pass).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
@@ -60,7 +62,7 @@ namespace {
 
 using namespace wcmps;
 
-enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, Strain, BandRate };
+enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, Strain, FreeSlip, BandRate };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
                                  Scheme scheme = Scheme::Defaults, double start_time = 0.0) {
@@ -75,6 +77,9 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
   if (scheme == Scheme::Strain) spec.gradient_renormalisation = GradientRenormalisation::Strain;
+  if (scheme == Scheme::FreeSlip) {
+    spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
+  }
   if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
@@ -156,6 +161,15 @@ void CaseI_Strain(benchmark::State& state) {
 }
 void DamBreakSurge_Strain(benchmark::State& state) {
   step(state, "dambreak", Scheme::Strain, kSurge);
+}
+void DamBreak_FreeSlip(benchmark::State& state) {
+  step(state, "dambreak", Scheme::FreeSlip);
+}
+void CaseI_FreeSlip(benchmark::State& state) {
+  step(state, "caseI", Scheme::FreeSlip);
+}
+void DamBreakSurge_FreeSlip(benchmark::State& state) {
+  step(state, "dambreak", Scheme::FreeSlip, kSurge);
 }
 void DamBreak_BandRate(benchmark::State& state) {
   step(state, "dambreak", Scheme::BandRate);
@@ -258,6 +272,21 @@ BENCHMARK(CaseI_Strain)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreakSurge_Strain)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_FreeSlip)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_FreeSlip)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_FreeSlip)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

@@ -39,10 +39,22 @@ struct alignas(64) PairRow {
 using PairRows = std::vector<PairRow>;
 
 /// The fields of the prediction's rows (physics/PredictionSumsAvx512.h), at r^n: position,
-/// velocity, carried n and the shift's velocity of the last step. The band's rate
-/// (physics/DensityRate_Randles1996.h) reads the same pairs at the same positions and
-/// velocities from them, later in the step.
-enum PredictionRow { kRowX, kRowY, kRowU, kRowV, kRowN, kRowShiftU, kRowShiftV };
+/// velocity, carried n and the shift's velocity of the last step, and the wall tangent of a
+/// free-slip wall's particle (physics/WallSlip_Colagrossi2003.h; 0 for none). A boundary
+/// particle's carried n is not read (its dn is i's at its depth), so its row's n holds its
+/// tangent's y (kRowTangentY = kRowN). The band's rate (physics/DensityRate_Randles1996.h) reads
+/// the same pairs at the same positions and velocities from them, later in the step.
+enum PredictionRow {
+  kRowX,
+  kRowY,
+  kRowU,
+  kRowV,
+  kRowN,
+  kRowShiftU,
+  kRowShiftV,
+  kRowTangentX,
+  kRowTangentY = kRowN
+};
 
 /// The fields of the correction's rows (physics/PressureGradientAvx512.h), at r*: position,
 /// q = p/n^2, and the band's corrector A = q (L - I).

@@ -67,8 +67,14 @@ ParticleSet::ParticleSet(const std::vector<ParticleSeed>& walls,
   id.resize(total);
   id_scratch_.resize(total);
   std::size_t k = 0;
+  normal_x.resize(static_cast<std::size_t>(fluid_begin_));
+  normal_y.resize(static_cast<std::size_t>(fluid_begin_));
   auto place = [&](const std::vector<ParticleSeed>& seeds, ParticleKind what) {
     for (const auto& s : seeds) {
+      if (what != ParticleKind::Fluid) {
+        normal_x[k] = s.normal.x;
+        normal_y[k] = s.normal.y;
+      }
       now.x[k] = s.position.x;
       now.y[k] = s.position.y;
       now.u[k] = s.velocity.x;

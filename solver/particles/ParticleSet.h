@@ -49,6 +49,7 @@ struct ParticleState {
 struct ParticleSeed {
   Vec2 position;
   Vec2 velocity;
+  Vec2 normal{};  ///< a boundary particle's wall normal, unit, into the solid (fluid: 0)
 };
 
 class ParticleSet {
@@ -84,6 +85,10 @@ class ParticleSet {
   ParticleState next;  ///< scratch for the step in progress
   std::vector<ParticleKind> kind;
   std::vector<std::int32_t> id;  ///< stable id: walls, then ghosts, then fluid at t = 0
+  /// The wall normal of each boundary particle [0, fluid_begin), unit, into the solid, from its
+  /// seed: that of the wall surface nearest to it. Boundary particles keep their slots and the
+  /// rigid body does not turn, so they are fixed.
+  std::vector<double> normal_x, normal_y;
 
  private:
   std::int64_t wall_end_ = 0;

@@ -38,6 +38,7 @@
 #include "operators/Kernel.h"
 #include "operators/MpsOperators.h"
 #include "physics/Viscosity.h"
+#include "physics/WallSlip_Colagrossi2003.h"
 
 namespace wcmps {
 
@@ -66,12 +67,20 @@ struct DensityInputs {
   const double* shift_v = nullptr;
 };
 
+/// The artificial viscosity's walls (physics/WallSlip_Colagrossi2003.h): the wall tangent of every
+/// particle, (0, 0) for a fluid particle. Null: no-slip walls.
+struct SlipInputs {
+  const double* tangent_x = nullptr;
+  const double* tangent_y = nullptr;
+};
+
 /// kShift: the rate reads the shift's velocities (d.shift_u, d.shift_v); without it they are not
-/// loaded at all (two gathers per pair less).
-template <bool kArtificial, bool kDensity, bool kShift = false>
+/// loaded at all (two gathers per pair less). kSlip: the artificial viscosity's pairs read the
+/// relative velocity without its part along slip's tangent of j (WallSlip_Colagrossi2003.h).
+template <bool kArtificial, bool kDensity, bool kShift = false, bool kSlip = false>
 PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb, const double* x,
                                const double* y, const double* u, const double* v,
-                               const DensityInputs& d) {
+                               const DensityInputs& d, const SlipInputs& slip = {}) {
   // Plain doubles and a copy of the kernel in the loop: with Vec2 and the kernel by reference
   // GCC 12 leaves this loop scalar.
   const Kernel w = kernel;
@@ -88,6 +97,8 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
   const double* su = d.shift_u;
   const double* sv = d.shift_v;
   const double sui = kShift ? su[i] : 0.0, svi = kShift ? sv[i] : 0.0;
+  const double* tx = slip.tangent_x;
+  const double* ty = slip.tangent_y;
   const std::int32_t* id = nb.first;
   // The rate's constant factor -3/re and G's 3/(re^2 F0) are applied once, after the loop; and
   // R s^4 = R (W / W(DL))^4 = clump W^4. Fewer operations per pair: the pass is bound by them.
@@ -111,18 +122,21 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
     }
     lap_x += Viscosity_Koshizuka1996Laplacian::pair(du, wij);
     lap_y += Viscosity_Koshizuka1996Laplacian::pair(dv, wij);
+    // The artificial viscosity's relative velocity: at a free-slip wall, its normal part alone.
+    double au = du, av = dv;
+    if constexpr (kSlip) WallSlip_Colagrossi2003::normal_part(tx[j], ty[j], au, av);
     if constexpr (kArtificial && kDensity) {
       const double soft_r2 = (r2 + soft0) * r2;
       const double inv = 1.0 / (soft_r2 * r);
       const double f =
-          ArtificialViscosity_Monaghan1992::pair_factor_over(dx, dy, du, dv, wij, r * inv);
+          ArtificialViscosity_Monaghan1992::pair_factor_over(dx, dy, au, av, wij, r * inv);
       q_x += f * dx;
       q_y += f * dy;
       // W'(r)/r = (-3/re) q^2 / r, 1/r = soft r^2 inv; r_ij . u_ij = (r_j - r_i) . (u_j - u_i).
       rate += q2 * (soft_r2 * inv) * (dx * mu + dy * mv);
     } else if constexpr (kArtificial) {
       const double f = ArtificialViscosity_Monaghan1992::pair_factor_over(
-          dx, dy, du, dv, wij, 1.0 / ((r2 + soft0) * r2));
+          dx, dy, au, av, wij, 1.0 / ((r2 + soft0) * r2));
       q_x += f * dx;
       q_y += f * dy;
     } else if constexpr (kDensity) {
@@ -153,14 +167,18 @@ PredictionSums prediction_sums(const Kernel& kernel, std::int64_t i, IdRange nb,
 }
 
 /// Viscous acceleration of particle i: the Laplacian viscosity (if nu > 0) and the artificial
-/// viscosity (if alpha > 0), summed in one pass over the neighbours.
+/// viscosity (if alpha > 0, at free-slip walls where slip has tangents), summed in one pass over
+/// the neighbours.
 inline Vec2 viscous_acceleration(const MpsOperators& ops,
                                  const Viscosity_Koshizuka1996Laplacian& visc,
                                  const ArtificialViscosity_Monaghan1992& art, std::int64_t i,
                                  IdRange nb, const double* x, const double* y, const double* u,
-                                 const double* v) {
+                                 const double* v, const SlipInputs& slip = {}) {
   if (art.alpha > 0.0) {
-    const auto s = prediction_sums<true, false>(ops.kernel(), i, nb, x, y, u, v, {});
+    const auto s =
+        slip.tangent_x
+            ? prediction_sums<true, false, false, true>(ops.kernel(), i, nb, x, y, u, v, {}, slip)
+            : prediction_sums<true, false>(ops.kernel(), i, nb, x, y, u, v, {});
     return s.lap * visc.scale(ops) + s.q * art.scale(ops);
   }
   return prediction_sums<false, false>(ops.kernel(), i, nb, x, y, u, v, {}).lap * visc.scale(ops);

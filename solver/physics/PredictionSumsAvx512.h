@@ -27,24 +27,31 @@
 
 namespace wcmps {
 
-/// The rows of particles [0, count) from their fields (shift_u, shift_v: null for none), one
-/// pass over the particles per step: 64 bytes written per particle against the pass's 64 read
-/// per pair.
+/// The rows of particles [0, count) from their fields (shift_u, shift_v: null for none; slip:
+/// the free-slip walls' tangents, or none), one pass over the particles per step: 64 bytes
+/// written per particle against the pass's 64 read per pair. A boundary particle (j <
+/// fluid_begin) carries its tangent in place of its n (PairRows.h).
 inline void pack_prediction_rows(PairRows& rows, std::int64_t count, const double* x,
                                  const double* y, const double* u, const double* v, const double* n,
-                                 const double* su, const double* sv) {
+                                 const double* su, const double* sv, std::int64_t fluid_begin,
+                                 const SlipInputs& slip = {}) {
   if (static_cast<std::int64_t>(rows.size()) < count) rows.resize(static_cast<std::size_t>(count));
   PairRow* r = rows.data();
+  const double* tx = slip.tangent_x;
+  const double* ty = slip.tangent_y;
   parallel_for(0, count, [=](std::int64_t j) {
-    r[j] = {{x[j], y[j], u[j], v[j], n[j], su ? su[j] : 0.0, sv ? sv[j] : 0.0, 0.0}};
+    const bool boundary = j < fluid_begin;
+    const double n_or_ty = boundary ? (ty ? ty[j] : 0.0) : n[j];
+    const double t_x = boundary && tx ? tx[j] : 0.0;
+    r[j] = {{x[j], y[j], u[j], v[j], n_or_ty, su ? su[j] : 0.0, sv ? sv[j] : 0.0, t_x}};
   });
 }
 
 #if WCMPS_PAIRS_AVX512
 
-/// prediction_sums<true, true, kShift> (PredictionSums.h) of particle i from the rows of every
-/// particle (d.n, d.shift_u and d.shift_v are read from the rows, not from d).
-template <bool kShift>
+/// prediction_sums<true, true, kShift, kSlip> (PredictionSums.h) of particle i from the rows of
+/// every particle (d.n, d.shift_u, d.shift_v and the walls' tangents are read from the rows).
+template <bool kShift, bool kSlip = false>
 PredictionSums prediction_sums_avx512(const Kernel& kernel, std::int64_t i, IdRange nb,
                                       const PairRow* rows, const DensityInputs& d) {
   const double inv_re = kernel.inv_re;
@@ -92,11 +99,22 @@ PredictionSums prediction_sums_avx512(const Kernel& kernel, std::int64_t i, IdRa
     // Viscosity_Koshizuka1996Laplacian::pair: du W.
     lap_x = _mm512_fmadd_pd(du, wij, lap_x);
     lap_y = _mm512_fmadd_pd(dv, wij, lap_y);
+    const __mmask8 fluid = _mm256_cmpge_epi32_mask(e.ids, fluid_begin);
+    // WallSlip_Colagrossi2003::normal_part: a boundary lane's tangent from its row (its n's
+    // slot), a fluid lane's 0.
+    __m512d au = du, av = dv;
+    if constexpr (kSlip) {
+      const __m512d tx = f[kRowTangentX];
+      const __m512d ty = _mm512_maskz_mov_pd(static_cast<__mmask8>(~fluid), f[kRowTangentY]);
+      const __m512d along = _mm512_fmadd_pd(du, tx, _mm512_mul_pd(dv, ty));
+      au = _mm512_fnmadd_pd(along, tx, du);
+      av = _mm512_fnmadd_pd(along, ty, dv);
+    }
     // ArtificialViscosity_Monaghan1992::pair_factor_over with 1/((r^2 + 0.01 h^2) r^2) = r inv.
     const __m512d soft_r2 = _mm512_mul_pd(_mm512_add_pd(r2, v_soft0), r2);
     const __m512d inv = _mm512_div_pd(one, _mm512_mul_pd(soft_r2, r));
     const __m512d closing =
-        _mm512_max_pd(_mm512_sub_pd(zero, _mm512_fmadd_pd(du, dx, _mm512_mul_pd(dv, dy))), zero);
+        _mm512_max_pd(_mm512_sub_pd(zero, _mm512_fmadd_pd(au, dx, _mm512_mul_pd(av, dy))), zero);
     const __m512d fq = _mm512_mul_pd(_mm512_mul_pd(closing, wij), _mm512_mul_pd(r, inv));
     q_x = _mm512_fmadd_pd(fq, dx, q_x);
     q_y = _mm512_fmadd_pd(fq, dy, q_y);
@@ -104,7 +122,6 @@ PredictionSums prediction_sums_avx512(const Kernel& kernel, std::int64_t i, IdRa
     const __m512d along = _mm512_fmadd_pd(dx, mu, _mm512_mul_pd(dy, mv));
     rate = _mm512_fmadd_pd(_mm512_mul_pd(q2, _mm512_mul_pd(soft_r2, inv)), along, rate);
     // The diffusion's sum over fluid neighbours; a boundary neighbour's dn is i's n at its depth.
-    const __mmask8 fluid = _mm256_cmpge_epi32_mask(e.ids, fluid_begin);
     const __m512d dn =
         _mm512_mask_sub_pd(_mm512_fmadd_pd(cx, dx, _mm512_mul_pd(cy, dy)), fluid, nj, ni);
     const __m512d diffused = _mm512_fnmadd_pd(hy, dy, _mm512_fnmadd_pd(hx, dx, dn));

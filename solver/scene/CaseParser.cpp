@@ -618,6 +618,14 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.negative_pressure = pick(kNegativePressureSchemes, "negative_pressure", c.negative_pressure);
     c.pressure_floor = r.number("pressure_floor", c.pressure_floor, -kInf, 0.0);
     c.wall_density = pick(kWallDensitySchemes, "wall_density", c.wall_density);
+    c.artificial_viscosity_walls = pick(kArtificialViscosityWallsSchemes,
+                                        "artificial_viscosity_walls", c.artificial_viscosity_walls);
+    c.wall_friction = pick(kWallFrictionSchemes, "wall_friction", c.wall_friction);
+    if (c.wall_friction != WallFrictionScheme::None && !(c.kinematic_viscosity > 0.0)) {
+      r.fail_key("wall_friction",
+                 "reads the law of the wall, whose stress needs the water's viscosity: give "
+                 "kinematic_viscosity > 0");
+    }
     c.number_density = pick(kNumberDensitySchemes, "number_density", c.number_density);
     c.density_diffusion = r.number("density_diffusion", c.density_diffusion, 0.0, 1.0);
     c.density_diffusion_scheme =

@@ -23,7 +23,9 @@
 #include "physics/TimeStep.h"
 #include "physics/WallCollision.h"
 #include "physics/WallDensity_Adami2012.h"
+#include "physics/WallFriction_Spalding1961.h"
 #include "physics/WallPressure.h"
+#include "physics/WallSlip_Colagrossi2003.h"
 
 namespace wcmps {
 
@@ -185,7 +187,15 @@ struct CaseSpec {
   double sound_speed_factor = 10.0;     ///< c0 = factor * sqrt(2 g H_fluid) when c0 not given
   double eos_exponent = 7.0;            ///< gamma
   double artificial_viscosity = 0.02;   ///< Monaghan alpha (-); 0 = off
-  double surface_threshold = 0.97;      ///< beta
+  /// The artificial viscosity's pairs with boundary particles: the whole relative velocity
+  /// ("no-slip") or its part along the wall's normal ("free-slip": no drag on water sliding
+  /// along a wall; physics/WallSlip_Colagrossi2003.h).
+  ArtificialViscosityWalls artificial_viscosity_walls = ArtificialViscosityWalls::NoSlip;
+  /// The wall's shear stress on the water sliding along it from the law of the wall
+  /// ("spalding1961": physics/WallFriction_Spalding1961.h), or none beyond the viscosities'
+  /// pairs; needs kinematic_viscosity > 0.
+  WallFrictionScheme wall_friction = WallFrictionScheme::None;
+  double surface_threshold = 0.97;  ///< beta
   PressureGradientScheme pressure_gradient = PressureGradientScheme::Suzuki2007;
   NegativePressure negative_pressure = NegativePressure::Sun2018Switch;
   double pressure_floor = -99.0e3;  ///< Pa: the lowest pressure kept (vapour pressure, 1 atm)

@@ -59,25 +59,45 @@ WallSurface wall_surface(const std::vector<Vec2>& points, bool closed, bool soli
   return w;
 }
 
-double signed_distance(const WallSurface& w, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  double sign = -1.0;
-  for (std::size_t s = 0; s < w.surface.size(); ++s) {
+namespace {
+
+/// The nearest point of a wall surface to p: its distance and the normal there into the solid
+/// (the mean of both normals at a vertex shared with a neighbouring segment; not unit).
+struct SurfaceFoot {
+  double distance = std::numeric_limits<double>::infinity();
+  Vec2 foot;
+  Vec2 normal;
+};
+
+SurfaceFoot nearest_foot(const WallSurface& w, Vec2 p) {
+  SurfaceFoot best;
+  const std::size_t ns = w.surface.size();
+  for (std::size_t s = 0; s < ns; ++s) {
     const Vec2 a = w.surface[s].a, b = w.surface[s].b;
     const double d = distance_to_segment(p, a, b);
-    if (d < best - 1e-15) {
-      best = d;
+    if (d < best.distance - 1e-15) {
       const Vec2 ab = b - a;
       const double t = dot(p - a, ab) / dot(ab, ab);
       Vec2 n = w.normals[s];
       // At a vertex shared with a neighbouring segment, use the mean of both normals.
-      const std::size_t ns = w.surface.size();
       if (t <= 0.0 && (s > 0 || w.closed)) n = n + w.normals[(s + ns - 1) % ns];
       if (t >= 1.0 && (s + 1 < ns || w.closed)) n = n + w.normals[(s + 1) % ns];
-      sign = dot(p - (a + std::clamp(t, 0.0, 1.0) * ab), n) > 0.0 ? 1.0 : -1.0;
+      best = {d, a + std::clamp(t, 0.0, 1.0) * ab, n};
     }
   }
-  return sign * best;
+  return best;
+}
+
+}  // namespace
+
+double signed_distance(const WallSurface& w, Vec2 p) {
+  const SurfaceFoot f = nearest_foot(w, p);
+  return dot(p - f.foot, f.normal) > 0.0 ? f.distance : -f.distance;
+}
+
+Vec2 surface_normal(const WallSurface& w, Vec2 p) {
+  const Vec2 n = nearest_foot(w, p).normal;
+  return n * (1.0 / norm(n));
 }
 
 std::vector<Vec2> solid_normals(const std::vector<Segment>& segments, bool solid_on_right) {

@@ -44,6 +44,10 @@ WallSurface wall_surface(const std::vector<Vec2>& points, bool closed, bool soli
 /// solid, using the normal of the nearest segment (the mean normal at a shared vertex).
 double signed_distance(const WallSurface& w, Vec2 p);
 
+/// Unit normal into the solid of the wall surface's segment nearest to p (the mean normal at a
+/// shared vertex, as signed_distance).
+Vec2 surface_normal(const WallSurface& w, Vec2 p);
+
 /// The polyline moved by `distance` along the solid normals, with mitred joins (so that rows
 /// at successive distances nest around corners). Throws std::domain_error if a segment would
 /// turn back on itself (a corner too sharp for the offset).

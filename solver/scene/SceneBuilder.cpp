@@ -170,13 +170,14 @@ Scene build_scene(const CaseSpec& spec, const std::function<void(double)>& progr
     for (int k = 0; k <= scene.ghost_layers; ++k) {
       const std::vector<Vec2> row = wall_row(spec, geometry, w, k);
       for (const auto& s : sample_polyline(row, ws.closed, dl)) {
+        const Vec2 normal = surface_normal(g, s.position);
         if (k == 0) {
-          walls.push_back({s.position, {}});
+          walls.push_back({s.position, {}, normal});
           continue;
         }
         // The ghost copies the wall particle nearest to its foot on the wall row.
         const Vec2 foot = s.position - g.normals[s.segment] * (k * dl);
-        ghosts.push_back({s.position, {}});
+        ghosts.push_back({s.position, {}, normal});
         ghost_sources.push_back(static_cast<std::int32_t>(nearest.find(foot)));
         ghost_owner.push_back(w);
       }

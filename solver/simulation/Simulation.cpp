@@ -138,6 +138,21 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   if (shift_in_continuity_) ps.track_shift();
   if (surface_cap_) ps.track_strikes();
   if (renormalisation_ == GradientRenormalisation::Strain) ps.track_rest_shape();
+  free_slip_ = spec.artificial_viscosity_walls == ArtificialViscosityWalls::FreeSlip &&
+               artificial_viscosity_.alpha > 0.0;
+  if (spec.wall_friction == WallFrictionScheme::Spalding1961) {
+    wall_friction_ = WallFriction_Spalding1961::make(spec.kinematic_viscosity, spec.dl, spec.re(),
+                                                     scene_.ghost_layers);
+  }
+  if (free_slip_ || wall_friction_) {
+    // The tangent is the normal turned by 90 degrees; its sign does not matter.
+    wall_tx_.assign(static_cast<std::size_t>(ps.size()), 0.0);
+    wall_ty_.assign(static_cast<std::size_t>(ps.size()), 0.0);
+    for (std::int64_t j = 0; j < ps.fluid_begin(); ++j) {
+      wall_tx_[j] = -ps.normal_y[j];
+      wall_ty_[j] = ps.normal_x[j];
+    }
+  }
   if (surface_scheme_ == FreeSurfaceScheme::Marrone2010) {
     fills_.assign(static_cast<std::size_t>(ps.size()), 0);
     std::fill(fills_.begin() + ps.fluid_begin(), fills_.end(), 1);
@@ -279,7 +294,11 @@ BodyForce Simulation::body_force(const Scheme& scheme, const double* input) {
     gradient += scheme.gradient_part(ops_, i, nb, of_body, t.x.data(), t.y.data(), input);
     if (viscous) {
       acceleration += viscous_acceleration(ops_, viscosity_, artificial_viscosity_, i, of_body,
-                                           s.x.data(), s.y.data(), s.u.data(), s.v.data());
+                                           s.x.data(), s.y.data(), s.u.data(), s.v.data(), slip());
+    }
+    if (wall_friction_) {
+      acceleration +=
+          wall_friction_->acceleration_part(friction_sums(i, nb), friction_sums(i, of_body));
     }
   }
   const double volume = rule_.dl * rule_.dl;
@@ -496,6 +515,13 @@ void Simulation::move_body(double dt) {
   body_->place(body_next_, scene_.particles.next);
 }
 
+WallFriction_Spalding1961::Sums Simulation::friction_sums(std::int64_t i, IdRange nb) const {
+  const ParticleState& s = scene_.particles.now;
+  return WallFriction_Spalding1961::sums(ops_.kernel(), i, nb, scene_.particles.fluid_begin(),
+                                         s.x.data(), s.y.data(), s.u.data(), s.v.data(),
+                                         wall_tx_.data(), wall_ty_.data());
+}
+
 void Simulation::predict(double dt) {
   ParticleSet& ps = scene_.particles;
   const ParticleState& s = ps.now;
@@ -515,23 +541,28 @@ void Simulation::predict(double dt) {
   density.shift_u = s.shift_u.data();
   density.shift_v = s.shift_v.data();
   const double lap_scale = viscosity_.scale(ops_), q_scale = artificial_viscosity_.scale(ops_);
-  const auto pass = [&](auto kPairs, auto kArtificial, auto kDensity, auto kShift) {
+  const SlipInputs slip_walls = slip();
+  const auto pass = [&](auto kPairs, auto kArtificial, auto kDensity, auto kShift, auto kSlip) {
     return root_of_max(parallel_max(ps.fluid_begin(), ps.size(), [&](std::int64_t i) {
       Vec2 a = gravity_;
       if constexpr (kPairs) {
         const PredictionSums p = [&] {
 #if WCMPS_PAIRS_AVX512
           if constexpr (kArtificial && kDensity) {
-            return prediction_sums_avx512<kShift>(ops_.kernel(), i, neighbours_.of(i),
-                                                  pair_rows_.data(), density);
+            return prediction_sums_avx512<kShift, kSlip>(ops_.kernel(), i, neighbours_.of(i),
+                                                         pair_rows_.data(), density);
           }
 #endif
-          return prediction_sums<kArtificial, kDensity, kShift>(ops_.kernel(), i, neighbours_.of(i),
-                                                                s.x.data(), s.y.data(), s.u.data(),
-                                                                s.v.data(), density);
+          return prediction_sums<kArtificial, kDensity, kShift, kSlip>(
+              ops_.kernel(), i, neighbours_.of(i), s.x.data(), s.y.data(), s.u.data(), s.v.data(),
+              density, slip_walls);
         }();
         a += p.lap * lap_scale;
         if constexpr (kArtificial) a += p.q * q_scale;
+        // The walls' shear stress on the water next to them (WallFriction_Spalding1961.h).
+        if (wall_friction_ && near_wall_[i]) {
+          a += wall_friction_->acceleration(friction_sums(i, neighbours_.of(i)));
+        }
         if constexpr (kDensity) {
           t.n[i] = continuity_.advance(s.n[i], p.rate, p.lapl, dt);
           n_sum_[i] = p.n;
@@ -554,18 +585,22 @@ void Simulation::predict(double dt) {
   if (prediction_rows_) {
     pack_prediction_rows(pair_rows_, ps.size(), s.x.data(), s.y.data(), s.u.data(), s.v.data(),
                          s.n.data(), follow ? s.shift_u.data() : nullptr,
-                         follow ? s.shift_v.data() : nullptr);
+                         follow ? s.shift_v.data() : nullptr, ps.fluid_begin(), slip_walls);
   }
+  // The artificial viscosity's free-slip walls: the same passes with kSlip.
+  const auto artificial_pass = [&](auto kSlip) {
+    return follow    ? pass(Yes{}, Yes{}, Yes{}, Yes{}, kSlip)
+           : evolved ? pass(Yes{}, Yes{}, Yes{}, No{}, kSlip)
+                     : pass(Yes{}, Yes{}, No{}, No{}, kSlip);
+  };
   if (!viscous && !evolved) {
-    star_drift_ = pass(No{}, No{}, No{}, No{});
+    star_drift_ = pass(No{}, No{}, No{}, No{}, No{});
   } else if (artificial) {
-    star_drift_ = follow    ? pass(Yes{}, Yes{}, Yes{}, Yes{})
-                  : evolved ? pass(Yes{}, Yes{}, Yes{}, No{})
-                            : pass(Yes{}, Yes{}, No{}, No{});
+    star_drift_ = slip_walls.tangent_x ? artificial_pass(Yes{}) : artificial_pass(No{});
   } else {
-    star_drift_ = follow    ? pass(Yes{}, No{}, Yes{}, Yes{})
-                  : evolved ? pass(Yes{}, No{}, Yes{}, No{})
-                            : pass(Yes{}, No{}, No{}, No{});
+    star_drift_ = follow    ? pass(Yes{}, No{}, Yes{}, Yes{}, No{})
+                  : evolved ? pass(Yes{}, No{}, Yes{}, No{}, No{})
+                            : pass(Yes{}, No{}, No{}, No{}, No{});
   }
   if (body_) star_drift_ = std::max(star_drift_, body_drift(body_next_.s));
   if (viscous || evolved) pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());

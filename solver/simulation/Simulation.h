@@ -28,7 +28,9 @@
 #include "physics/Viscosity.h"
 #include "physics/WallCollision.h"
 #include "physics/WallDensity_Adami2012.h"
+#include "physics/WallFriction_Spalding1961.h"
 #include "physics/WallPressure.h"
+#include "physics/WallSlip_Colagrossi2003.h"
 #include "scene/CaseSpec.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/PhaseTimer.h"
@@ -163,6 +165,11 @@ class Simulation {
            (j >= b.ghosts.first && j < b.ghosts.second);
   }
   double body_drift(double s) const { return body_ ? std::abs(s - body_built_s_) : 0.0; }
+  SlipInputs slip() const {
+    return free_slip_ ? SlipInputs{wall_tx_.data(), wall_ty_.data()} : SlipInputs{};
+  }
+  // The wall friction's sums of fluid particle i over the boundary particles of nb, at r^n, u^n.
+  WallFriction_Spalding1961::Sums friction_sums(std::int64_t i, IdRange nb) const;
 
   Scene scene_;
   MpsOperators ops_;
@@ -170,6 +177,12 @@ class Simulation {
   FreeSurface_Koshizuka1996 surface_;
   Viscosity_Koshizuka1996Laplacian viscosity_;
   ArtificialViscosity_Monaghan1992 artificial_viscosity_;
+  // The wall tangent of every particle, (0, 0) for fluid ones, read by the artificial
+  // viscosity's free-slip walls (physics/WallSlip_Colagrossi2003.h) and the wall friction
+  // (physics/WallFriction_Spalding1961.h); empty when neither is on.
+  std::vector<double> wall_tx_, wall_ty_;
+  bool free_slip_ = false;
+  std::optional<WallFriction_Spalding1961> wall_friction_;
   PressureGradientScheme gradient_scheme_;
   WallPressureScheme wall_scheme_;
   std::optional<WallDensity_Adami2012> wall_density_;  // unset: boundary particles at n0

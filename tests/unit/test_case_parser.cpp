@@ -59,6 +59,7 @@ TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_EQ(c.pressure_gradient, PressureGradientScheme::Suzuki2007);
   EXPECT_EQ(c.wall_pressure, WallPressureScheme::FluidExtrapolated);
   EXPECT_EQ(c.wall_density, WallDensityScheme::Adami2012);
+  EXPECT_EQ(c.artificial_viscosity_walls, ArtificialViscosityWalls::NoSlip);
   EXPECT_EQ(c.density_rate, DensityRateScheme::Randles1996);
   EXPECT_EQ(c.output_fields.size(), std::size(kFields));
   EXPECT_EQ(c.output_kinds.size(), 3u);
@@ -156,6 +157,19 @@ TEST(CaseParser, OutOfRangeValueIsNamedWithTheRange) {
   expect_error(test::minimal_case_text() + "\n[time]\n", 0, "");  // duplicate table: syntax
 }
 
+TEST(CaseParser, TheArtificialViscositysWallsAreNamedByKey) {
+  const auto walls = [](const std::string& key) {
+    return parse_case_text(test::minimal_case_text() +
+                               "\n[physics]\nartificial_viscosity_walls = \"" + key + "\"\n",
+                           "mini.toml")
+        .artificial_viscosity_walls;
+  };
+  EXPECT_EQ(walls("free-slip"), ArtificialViscosityWalls::FreeSlip);
+  EXPECT_EQ(walls("no-slip"), ArtificialViscosityWalls::NoSlip);
+  expect_error(test::minimal_case_text() + "\n[physics]\nartificial_viscosity_walls = \"slip\"\n",
+               18, "artificial_viscosity_walls: \"slip\" is not one of \"no-slip\", \"free-slip\"");
+}
+
 TEST(CaseParser, InconsistentValuesAreNamed) {
   expect_error(test::minimal_case_text() + "\n[output]\ntimes = [0.005, 0.002]\n", 18,
                "must be increasing");
@@ -175,6 +189,9 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "\n[physics]\ngradient_renormalisation = \"khayyer2011-strain\"\n"
                    "strain_memory = 0.0\n",
                19, "strain_memory: value 0 is out of range (0, inf)");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\nkinematic_viscosity = 0.0\nwall_friction = \"spalding1961\"\n",
+               19, "give kinematic_viscosity > 0");
   expect_error(test::minimal_case_text() +
                    "\n[physics]\nnumber_density = \"summation\"\n"
                    "density_rate = \"randles1996\"\n",

@@ -13,6 +13,7 @@
 #include "operators/MpsOperators.h"
 #include "physics/EquationOfState.h"
 #include "physics/PredictionSums.h"
+#include "physics/WallFriction_Spalding1961.h"
 
 namespace wcmps {
 namespace {
@@ -158,6 +159,144 @@ TEST(PairLoops, PairsBeyondReAddExactlyNothing) {
   EXPECT_EQ(viscous_acceleration(ops, visc, art, i, nb, x, y, wild.data(), tame.data()).x,
             viscous_acceleration(ops, visc, art, i, nb, x, y, tame.data(), tame.data()).x);
   EXPECT_DOUBLE_EQ(ops.number_density(i, nb, x, y), c.n0);
+}
+
+// A fluid particle half a DL above a flat wall (its wall row and ghost rows below, tangent
+// (1, 0)), in a block of fluid that moves as one: only its pairs with the wall are relative
+// motion, so the artificial viscosity it gets is the wall's.
+TEST(ArtificialViscosity, AFreeSlipWallDampsTheApproachAloneNotTheSliding) {
+  const double dl = 0.01, re = 3.5 * dl;
+  const auto c = square_lattice_constants(dl, re);
+  const MpsOperators ops(re, 2, c.n0, c.lambda, c.gradient_correction);
+  std::vector<double> x, y;
+  for (int row = -4; row <= 3; ++row) {  // rows below 0: the wall's; the wall row first
+    for (int col = -5; col <= 5; ++col) {
+      x.push_back(col * dl);
+      y.push_back((row + 0.5) * dl);
+    }
+  }
+  const std::int64_t fluid_begin = 4 * 11, i = fluid_begin + 5;  // (0, DL/2)
+  std::vector<std::int32_t> ids;
+  for (std::int64_t j = 0; j < static_cast<std::int64_t>(x.size()); ++j) {
+    if (j != i && std::hypot(x[j] - x[i], y[j] - y[i]) < re) ids.push_back(static_cast<int>(j));
+  }
+  const IdRange nb{ids.data(), ids.data() + ids.size()};
+  std::vector<double> tx(x.size(), 0.0), ty(x.size(), 0.0);
+  for (std::int64_t j = 0; j < fluid_begin; ++j) tx[j] = 1.0;
+  const SlipInputs free_slip{tx.data(), ty.data()};
+  const Viscosity_Koshizuka1996Laplacian none{0.0};
+  const ArtificialViscosity_Monaghan1992 art{0.02, 26.0};
+  auto acceleration = [&](Vec2 flow, const SlipInputs& slip) {
+    std::vector<double> u(x.size(), 0.0), v(x.size(), 0.0);
+    for (std::size_t k = static_cast<std::size_t>(fluid_begin); k < x.size(); ++k) {
+      u[k] = flow.x;
+      v[k] = flow.y;
+    }
+    return viscous_acceleration(ops, none, art, i, nb, x.data(), y.data(), u.data(), v.data(),
+                                slip);
+  };
+  // Sliding: the no-slip wall's pairs ahead of the particle drag it back, the free-slip
+  // wall's do nothing (the relative velocity's normal part is exactly 0).
+  const Vec2 slide{0.3, 0.0}, approach{0.0, -0.2}, both{0.3, -0.2};
+  ASSERT_LT(acceleration(slide, {}).x, -1.0);  // m/s^2: alpha c0 u / h order
+  EXPECT_EQ(acceleration(slide, free_slip).x, 0.0);
+  EXPECT_EQ(acceleration(slide, free_slip).y, 0.0);
+  // Approaching along the normal: the same pairs close at the same speed either way.
+  const Vec2 pushed = acceleration(approach, {});
+  ASSERT_GT(pushed.y, 1.0);
+  EXPECT_EQ(acceleration(approach, free_slip).y, pushed.y);
+  // Both: the free-slip wall reads the approach alone (its pairs' relative velocities are the
+  // approach's, bit for bit), the no-slip wall the sliding too.
+  const Vec2 oblique = acceleration(both, free_slip);
+  EXPECT_EQ(oblique.x, pushed.x);
+  EXPECT_EQ(oblique.y, pushed.y);
+  EXPECT_LT(acceleration(both, {}).x, 0.5 * acceleration(slide, {}).x);
+}
+
+// Spalding's single formula meets its two limits: nu u / y deep in the viscous sublayer, the
+// log law u+ = ln(y+) / kappa + B far out of it.
+TEST(WallFriction, SpaldingsLawMeetsTheSublayerAndTheLogLayer) {
+  const double nu = 1e-6, dl = 0.01;
+  const auto f = WallFriction_Spalding1961::make(nu, dl, 3.5 * dl, 3);
+  const double y = 0.5 * dl;
+  // u = 1e-4 m/s: y+ about 0.7, where the formula departs from y+ = u+ by its fourth-order term,
+  // (kappa u+)^4 / 24 e^(-kappa B), under 1e-4 of u+.
+  EXPECT_NEAR(f.stress(1e-4), nu * 1e-4 / y, 1e-4 * nu * 1e-4 / y);
+  // u = 2 m/s: y+ about 400; the formula's polynomial terms are 1 % of its exponential there,
+  // 0.03 of u+ at most after the logarithm: 0.2 % of u+.
+  const double ut = std::sqrt(f.stress(2.0));
+  const double y_plus = y * ut / nu;
+  ASSERT_GT(y_plus, 100.0);
+  EXPECT_NEAR(2.0 / ut,
+              std::log(y_plus) / WallFriction_Spalding1961::kKappa + WallFriction_Spalding1961::kB,
+              0.002 * 2.0 / ut);
+  EXPECT_EQ(f.stress(0.0), 0.0);
+}
+
+// The table the stress reads against the root of Spalding's law found at each speed.
+TEST(WallFriction, TheTabulatedLawMatchesItsRoot) {
+  const double nu = 1e-6, dl = 0.005;
+  const auto f = WallFriction_Spalding1961::make(nu, dl, 3.5 * dl, 3);
+  for (double u = 1e-6; u < 30.0; u *= 1.37) {
+    const double re = u * f.y / nu;
+    double lo = 0.0, hi = std::sqrt(re);
+    for (int it = 0; it < 300; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (mid * WallFriction_Spalding1961::y_plus(mid) > re ? hi : lo) = mid;
+    }
+    const double ut = u / (0.5 * (lo + hi));
+    // ln u+ interpolated linearly in ln Re at steps of 0.01: exact in the sublayer, and its
+    // error h^2/8 |d2 ln u+ / d(ln Re)^2| is largest in the buffer layer, 2.7e-6 of the stress
+    // at u = 0.03-0.08 m/s here (1.4e-6 of u+).
+    EXPECT_NEAR(f.stress(u), ut * ut, 4e-6 * ut * ut) << "u = " << u;
+  }
+}
+
+// Rows of fluid sliding at U along a flat wall (its wall row and three ghost rows): the
+// accelerations of one column of particles, one per row, add up to the wall's stress over the
+// column's width, sum_m DL^2 a_m = -DL tau_w / rho; along the wall only; none when the wall
+// moves with the water.
+TEST(WallFriction, TheRowsAlongAWallCarryTheWallsStress) {
+  const double dl = 0.01, re = 3.5 * dl, nu = 1e-6, speed = 0.5;
+  const int ghost_layers = 3;
+  std::vector<double> x, y, u, v, tx, ty;
+  for (int row = -(ghost_layers + 1); row <= 6; ++row) {
+    for (int col = -8; col <= 8; ++col) {
+      x.push_back(col * dl);
+      y.push_back((row + 0.5) * dl);
+      const bool wall = row < 0;
+      u.push_back(wall ? 0.0 : speed);
+      v.push_back(0.0);
+      tx.push_back(wall ? 1.0 : 0.0);
+      ty.push_back(0.0);
+    }
+  }
+  const std::int64_t fluid_begin = (ghost_layers + 1) * 17;
+  const auto f = WallFriction_Spalding1961::make(nu, dl, re, ghost_layers);
+  const Kernel kernel(re);
+  auto column = [&](const std::vector<double>& uu) {
+    Vec2 total;
+    for (int row = 0; row <= 6; ++row) {
+      const std::int64_t i = fluid_begin + row * 17 + 8;  // x = 0
+      std::vector<std::int32_t> ids;
+      for (std::int64_t j = 0; j < static_cast<std::int64_t>(x.size()); ++j) {
+        if (j != i && std::hypot(x[j] - x[i], y[j] - y[i]) < re) ids.push_back(static_cast<int>(j));
+      }
+      const IdRange nb{ids.data(), ids.data() + ids.size()};
+      total += f.acceleration(WallFriction_Spalding1961::sums(kernel, i, nb, fluid_begin, x.data(),
+                                                              y.data(), uu.data(), v.data(),
+                                                              tx.data(), ty.data())) *
+               (dl * dl);
+    }
+    return total;
+  };
+  const Vec2 total = column(u);
+  // The same sums as S's, in another order: rounding only.
+  EXPECT_NEAR(total.x, -dl * f.stress(speed), 1e-12 * dl * f.stress(speed));
+  EXPECT_EQ(total.y, 0.0);
+  std::vector<double> along = u;
+  for (std::int64_t j = 0; j < fluid_begin; ++j) along[j] = speed;
+  EXPECT_EQ(column(along).x, 0.0);
 }
 
 TEST(EquationOfState, WholeExponentsBySquaringMatchPow) {

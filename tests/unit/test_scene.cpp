@@ -113,6 +113,37 @@ TEST(SceneBuilder, GhostsCopyTheWallParticleAlongTheWallNormal) {
   EXPECT_EQ(ps.ghost_count(), 210);
 }
 
+// Every boundary particle carries the unit normal of its wall's surface, into the solid: the
+// left wall's (-1, 0), the bed's (0, -1), the right wall's (1, 0), and behind the corners, where
+// the surface's nearest point is the corner itself, the mean of both
+// (physics/WallSlip_Colagrossi2003.h reads them).
+TEST(SceneBuilder, BoundaryParticlesCarryTheirWallsNormal) {
+  const Scene scene = build_scene(parse_case_text(test::minimal_case_text(), "mini.toml"));
+  const ParticleSet& ps = scene.particles;
+  ASSERT_EQ(static_cast<std::int64_t>(ps.normal_x.size()), ps.fluid_begin());
+  int corners = 0;
+  for (std::int64_t j = 0; j < ps.fluid_begin(); ++j) {
+    const double x = ps.now.x[j], y = ps.now.y[j];
+    const Vec2 n{ps.normal_x[j], ps.normal_y[j]};
+    EXPECT_NEAR(norm(n), 1.0, kExact);
+    Vec2 expected;
+    if (x < 0.0 && y > 0.0) {
+      expected = {-1.0, 0.0};
+    } else if (x > 0.2 && y > 0.0) {
+      expected = {1.0, 0.0};
+    } else if (x > 0.0 && x < 0.2) {
+      expected = {0.0, -1.0};
+    } else {  // behind a corner
+      ++corners;
+      expected = Vec2{x < 0.0 ? -1.0 : 1.0, -1.0} * std::sqrt(0.5);
+    }
+    EXPECT_NEAR(n.x, expected.x, kExact) << "at (" << x << ", " << y << ")";
+    EXPECT_NEAR(n.y, expected.y, kExact) << "at (" << x << ", " << y << ")";
+  }
+  // Row k turns its corner with 2k + 1 particles behind it: 1 + 3 + 5 + 7 at each corner.
+  EXPECT_EQ(corners, 2 * 16);
+}
+
 /// A 40-degree bed from (0, 0) up to y = 0.3 m, a vertical wall down to it (the solid on the
 /// right all along), and water in the triangle above the bed up to y = 0.25 m; `particles` adds
 /// lines to [particles].

@@ -129,6 +129,62 @@ TEST(Simulation, TheGradientRenormalisationActsInTheStep) {
   set_thread_count(2);
 }
 
+// A layer of water sliding at 0.5 m/s along a long bed without gravity: the no-slip wall's
+// artificial viscosity drags it; the free-slip wall's does not (what is left is water's own
+// viscosity, nu = 1e-6); the wall friction takes the law of the wall's stress over the wet
+// bed, tau_w(0.5 m/s, DL/2) L t, from its momentum, and nothing across the bed.
+TEST(Simulation, TheWallsDragIsTheLawOfTheWallsWithFriction) {
+  set_thread_count(1);
+  const std::string text = R"([case]
+name = "layer"
+[particles]
+spacing = 0.01
+[physics]
+sound_speed = 10.0
+gravity = [0.0, 0.0]
+[time]
+end = 1.0
+[[wall]]
+polyline = [[0.0, 0.2], [0.0, 0.0], [1.0, 0.0], [1.0, 0.2]]
+solid = "right"
+[[fluid]]
+rectangle = { min = [0.3, 0.0], max = [0.7, 0.05] }
+velocity = [0.5, 0.0]
+)";
+  const double duration = 0.02;  // s: the layer moves 1 cm, far from the side walls
+  const auto momentum_lost = [&](ArtificialViscosityWalls walls, WallFrictionScheme friction) {
+    CaseSpec spec = parse_case_text(text, "layer.toml");
+    spec.artificial_viscosity_walls = walls;
+    spec.wall_friction = friction;
+    Simulation sim(spec, build_scene(spec));
+    while (sim.time() < duration) sim.step(duration);
+    const ParticleSet& ps = sim.particles();
+    Vec2 lost;  // per unit mass of the layer's particles, times their mass rho DL^2 / rho
+    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+      lost += Vec2{0.5 - ps.now.u[i], -ps.now.v[i]} * (0.01 * 0.01);
+    }
+    return lost;
+  };
+  const Vec2 no_slip = momentum_lost(ArtificialViscosityWalls::NoSlip, WallFrictionScheme::None);
+  const Vec2 free_slip =
+      momentum_lost(ArtificialViscosityWalls::FreeSlip, WallFrictionScheme::None);
+  const Vec2 friction =
+      momentum_lost(ArtificialViscosityWalls::FreeSlip, WallFrictionScheme::Spalding1961);
+  const auto law = WallFriction_Spalding1961::make(1e-6, 0.01, 0.035, 3);
+  const double expected = law.stress(0.5) * 0.4 * duration;  // m^3/s per unit width / rho
+  // The no-slip wall's drag, k u with k ~ 0.015 m/s at c0 = 10 m/s, is many times the law's.
+  EXPECT_GT(no_slip.x, 5.0 * expected);
+  // The free-slip wall's: water's viscosity through the Laplacian's no-slip wall, about
+  // nu u / DL over the bed (6 % of the law's stress here).
+  EXPECT_LT(std::abs(free_slip.x), 0.1 * expected);
+  // The friction's loss: the law's stress over the bed the layer covers (its ends, where the
+  // rows are cut, and the slip's slowing by a few per mille, to 10 %), along the bed: across
+  // it only what the changed flow moves (2 % of it here).
+  EXPECT_NEAR(friction.x - free_slip.x, expected, 0.1 * expected);
+  EXPECT_NEAR(friction.y, free_slip.y, 0.05 * expected);
+  set_thread_count(2);
+}
+
 // The band's rate reaches the step: on the falling column (its surface drawn down and spreading)
 // it changes n; in still water without gravity (no velocity, both rates 0) it changes nothing.
 TEST(Simulation, TheBandRateActsInTheStep) {
