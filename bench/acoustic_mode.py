@@ -79,6 +79,12 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
     ("gradient_renormalisation khayyer2011-strain", 10,
      {"gradient_renormalisation": '"khayyer2011-strain"'}),
+    ("artificial_viscosity_walls free-slip", 10, {"artificial_viscosity_walls": '"free-slip"'}),
+    ("khayyer2011-strain, artificial_viscosity_walls free-slip", 10,
+     {"gradient_renormalisation": '"khayyer2011-strain"',
+      "artificial_viscosity_walls": '"free-slip"'}),
+    ("artificial_viscosity_walls free-slip, wall_friction spalding1961", 10,
+     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
 ]
 
 

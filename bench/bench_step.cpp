@@ -21,6 +21,8 @@
 //   rest shapes read and advanced in the gradient's pass).
 // - DamBreak_FreeSlip, CaseI_FreeSlip, DamBreakSurge_FreeSlip: the defaults with
 //   artificial_viscosity_walls = "free-slip" (the walls' tangents read in the prediction's pass).
+// - DamBreak_WallFriction, CaseI_WallFriction, DamBreakSurge_WallFriction: the same with
+//   wall_friction = "spalding1961" too (a pass over each near-wall particle's list, and the law).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
@@ -62,7 +64,16 @@ namespace {
 
 using namespace wcmps;
 
-enum class Scheme { Defaults, Old, Hydrostatic, Deviatoric, Strain, FreeSlip, BandRate };
+enum class Scheme {
+  Defaults,
+  Old,
+  Hydrostatic,
+  Deviatoric,
+  Strain,
+  FreeSlip,
+  WallFriction,
+  BandRate
+};
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
                                  Scheme scheme = Scheme::Defaults, double start_time = 0.0) {
@@ -77,9 +88,10 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
   if (scheme == Scheme::Strain) spec.gradient_renormalisation = GradientRenormalisation::Strain;
-  if (scheme == Scheme::FreeSlip) {
+  if (scheme == Scheme::FreeSlip || scheme == Scheme::WallFriction) {
     spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
   }
+  if (scheme == Scheme::WallFriction) spec.wall_friction = WallFrictionScheme::Spalding1961;
   if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
@@ -170,6 +182,15 @@ void CaseI_FreeSlip(benchmark::State& state) {
 }
 void DamBreakSurge_FreeSlip(benchmark::State& state) {
   step(state, "dambreak", Scheme::FreeSlip, kSurge);
+}
+void DamBreak_WallFriction(benchmark::State& state) {
+  step(state, "dambreak", Scheme::WallFriction);
+}
+void CaseI_WallFriction(benchmark::State& state) {
+  step(state, "caseI", Scheme::WallFriction);
+}
+void DamBreakSurge_WallFriction(benchmark::State& state) {
+  step(state, "dambreak", Scheme::WallFriction, kSurge);
 }
 void DamBreak_BandRate(benchmark::State& state) {
   step(state, "dambreak", Scheme::BandRate);
@@ -287,6 +308,21 @@ BENCHMARK(CaseI_FreeSlip)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreakSurge_FreeSlip)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_WallFriction)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_WallFriction)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_WallFriction)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

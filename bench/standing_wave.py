@@ -12,7 +12,9 @@ renormalised gradient, whole and hydrostatic; rows 24-30 the sound speed, the ke
 the time step, for what the loss does not depend on; rows 31-32 the band's rate renormalised;
 rows 41-42 the hydrostatic gradient read through M's deviatoric part, rows 43-44 through the
 change of it from each particle's rest shape, rows 45-46 with that shape's memory shorter and
-longer, rows 47-49 with its artificial viscosity's alpha 0.005, 0.01, 0.04), reads gauges.csv,
+longer, rows 47-49 with its artificial viscosity's alpha 0.005, 0.01, 0.04; rows 50-51 the
+defaults and the shape's change with the artificial viscosity's walls free-slip, rows 52-53 the
+same with the wall friction of the law of the wall), reads gauges.csv,
 and prints one row per scheme, by two measures (the gauges: GAUGES below).
 
 The mode (the first measure of docs/validation.md): a1(t), the least-squares amplitude of
@@ -135,6 +137,18 @@ SCHEMES = [
      {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.01"}),
     ("new, the shape's change, artificial viscosity 0.04",
      {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.04"}),
+    # 50-51: the artificial viscosity's walls free-slip (2026-12-07, session 10): the defaults
+    # and the shape's change without the walls' drag of rows 47-49
+    ("new, artificial viscosity's walls free-slip", {"artificial_viscosity_walls": '"free-slip"'}),
+    ("new, the shape's change, artificial viscosity's walls free-slip",
+     {"gradient_renormalisation": '"khayyer2011-strain"',
+      "artificial_viscosity_walls": '"free-slip"'}),
+    # 52-53: the same with the walls' friction of the law of the wall (water's own drag)
+    ("new, artificial viscosity's walls free-slip, wall friction",
+     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+    ("new, the shape's change, artificial viscosity's walls free-slip, wall friction",
+     {"gradient_renormalisation": '"khayyer2011-strain"',
+      "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

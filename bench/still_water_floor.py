@@ -42,6 +42,12 @@ VARIANTS = [
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
     ("gradient_renormalisation khayyer2011-strain",
      {"gradient_renormalisation": '"khayyer2011-strain"'}),
+    ("artificial_viscosity_walls free-slip", {"artificial_viscosity_walls": '"free-slip"'}),
+    ("khayyer2011-strain, artificial_viscosity_walls free-slip",
+     {"gradient_renormalisation": '"khayyer2011-strain"',
+      "artificial_viscosity_walls": '"free-slip"'}),
+    ("artificial_viscosity_walls free-slip, wall_friction spalding1961",
+     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
 ]
 
 
