@@ -14,13 +14,13 @@
 ///     y+ = u+ + e^(-kappa B) [e^(kappa u+) - 1 - kappa u+ - (kappa u+)^2/2 - (kappa u+)^3/6],
 ///
 /// kappa = 0.41, B = 5.2 (a smooth wall: Pope 2000, Turbulent Flows, section 7.1), is solved for
-/// u_tau, and tau_w / rho = u_tau^2. It is nu u / y in the sublayer (y+ < 5: slow flows, the
-/// standing wave's slip of a few cm/s at y = 5 mm gives y+ of order 1 to 10) and about
-/// (kappa u / ln(E y+))^2 in the log layer (the dam break's surge at 2-3 m/s: y+ of several
-/// hundred, C_f = tau_w / (rho u^2) about 0.004). The artificial viscosity's drag at a no-slip
-/// wall is rho k u with k = alpha c0 times a kernel constant, 0.03-0.06 m/s here
-/// (tools/wall_drag_estimate.py): 300 to 1000 times the sublayer's nu / y, and still 2 to 5
-/// times the log layer's stress at the surge's speed.
+/// u_tau, and tau_w / rho = u_tau^2. It is nu u / y in the sublayer (y+ < 5) and about
+/// (kappa u / ln(E y+))^2 in the log layer. The standing wave's slip of 2-5 cm/s at y = 5 mm
+/// has y+ of 5 to 20, the buffer layer: tau_w / (rho u) = 2.5-3.7e-4 m/s. The dam break's surge
+/// at 2.5-3 m/s at y = 2.5 mm has y+ of several hundred: C_f = tau_w / (rho u^2) about 0.003.
+/// The artificial viscosity's drag at a no-slip wall is rho k u with k = alpha c0 times a
+/// kernel constant, 0.03-0.06 m/s here (tools/wall_drag_estimate.py): 60 to 130 times the law's
+/// stress at the wave's slip, and still 7 to 9 times at the surge's.
 ///
 /// On the particles: each fluid particle i with boundary neighbours sums, over them,
 ///
