@@ -48,6 +48,9 @@ VARIANTS = [
       "artificial_viscosity_walls": '"free-slip"'}),
     ("artificial_viscosity_walls free-slip, wall_friction spalding1961",
      {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+    ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction spalding1961",
+     {"gradient_renormalisation": '"khayyer2011-strain"',
+      "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
 ]
 
 
