@@ -36,10 +36,10 @@
 /// proportion of their w, and the shares add up to tau_w per unit length of the wall (a column
 /// of particles, one per row, has mass rho DL^2 each, so sum_m rho DL^2 a_m = DL tau_w). The slip
 /// of each row is its own but y is the first row's: the rows above it, which carry less of the
-/// stress (w falls by a factor of 5 from row 0 to row 1 at re = 3.5 DL), read it as if they were
-/// the first (a simplification, not the law at their distance). Where the wall moves (the
-/// block) the slip is relative to its particles' velocity, and the body feels the reaction of
-/// its own share (the part of s_i from its particles: acceleration_part).
+/// stress (at re = 3.5 DL with three ghost rows row 0 takes 85 % of it, row 1 15 %, row 2 0.4 %),
+/// read it as if they were the first (a simplification, not the law at their distance). Where the
+/// wall moves (the block) the slip is relative to its particles' velocity, and the body feels the
+/// reaction of its own share (the part of s_i from its particles: acceleration_part).
 
 #include <algorithm>
 #include <cmath>
