@@ -626,6 +626,27 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                  "reads the law of the wall, whose stress needs the water's viscosity: give "
                  "kinematic_viscosity > 0");
     }
+    c.side_wall_friction =
+        pick(kSideWallFrictionSchemes, "side_wall_friction", c.side_wall_friction);
+    if (const auto b = r.optional_number("flume_width", 0.0, kInf, true)) {
+      if (c.side_wall_friction == SideWallFrictionScheme::None) {
+        r.fail_key("flume_width",
+                   "is the width between the side walls of side_wall_friction only: give "
+                   "side_wall_friction = \"spalding1961\" or leave it out");
+      }
+      c.flume_width = *b;
+    }
+    if (c.side_wall_friction != SideWallFrictionScheme::None) {
+      if (!(c.flume_width > 0.0)) {
+        r.fail_key("side_wall_friction",
+                   "needs the flume's width between its side walls: give flume_width (m)");
+      }
+      if (!(c.kinematic_viscosity > 0.0)) {
+        r.fail_key("side_wall_friction",
+                   "reads the law of the wall, whose stress needs the water's viscosity: give "
+                   "kinematic_viscosity > 0");
+      }
+    }
     c.number_density = pick(kNumberDensitySchemes, "number_density", c.number_density);
     c.density_diffusion = r.number("density_diffusion", c.density_diffusion, 0.0, 1.0);
     c.density_diffusion_scheme =

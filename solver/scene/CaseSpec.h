@@ -20,6 +20,7 @@
 #include "physics/NumberDensity_Jandaghian2020.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PressureGradient.h"
+#include "physics/SideWallFriction_Spalding1961.h"
 #include "physics/TimeStep.h"
 #include "physics/WallCollision.h"
 #include "physics/WallDensity_Adami2012.h"
@@ -195,6 +196,11 @@ struct CaseSpec {
   /// ("spalding1961": physics/WallFriction_Spalding1961.h), or none beyond the viscosities'
   /// pairs; needs kinematic_viscosity > 0.
   WallFrictionScheme wall_friction = WallFrictionScheme::None;
+  /// The flume's side walls, which the 2D scene leaves out: their shear stress on every fluid
+  /// particle from the law of the wall ("spalding1961": physics/SideWallFriction_Spalding1961.h),
+  /// or none; needs flume_width and kinematic_viscosity > 0.
+  SideWallFrictionScheme side_wall_friction = SideWallFrictionScheme::None;
+  double flume_width = 0.0;         ///< b, between the side walls (m); 0: not given
   double surface_threshold = 0.97;  ///< beta
   PressureGradientScheme pressure_gradient = PressureGradientScheme::Suzuki2007;
   NegativePressure negative_pressure = NegativePressure::Sun2018Switch;

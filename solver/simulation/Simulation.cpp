@@ -144,6 +144,9 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     wall_friction_ = WallFriction_Spalding1961::make(spec.kinematic_viscosity, spec.dl, spec.re(),
                                                      scene_.ghost_layers);
   }
+  if (spec.side_wall_friction == SideWallFrictionScheme::Spalding1961) {
+    side_walls_ = SideWallFriction_Spalding1961::make(spec.kinematic_viscosity, spec.flume_width);
+  }
   if (free_slip_ || wall_friction_) {
     // The tangent is the normal turned by 90 degrees; its sign does not matter.
     wall_tx_.assign(static_cast<std::size_t>(ps.size()), 0.0);
@@ -570,6 +573,8 @@ void Simulation::predict(double dt) {
           grad_y_[i] = p.gradient.y;
         }
       }
+      // The flume's side walls, which the scene leaves out (SideWallFriction_Spalding1961.h).
+      if (side_walls_) a += side_walls_->acceleration({s.u[i], s.v[i]});
       t.u[i] = s.u[i] + dt * a.x;
       t.v[i] = s.v[i] + dt * a.y;
       t.x[i] = s.x[i] + dt * t.u[i];

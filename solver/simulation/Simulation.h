@@ -23,6 +23,7 @@
 #include "physics/PredictionSums.h"
 #include "physics/PredictionSumsAvx512.h"
 #include "physics/PressureGradient.h"
+#include "physics/SideWallFriction_Spalding1961.h"
 #include "physics/SurfacePressureCap.h"
 #include "physics/TimeStep.h"
 #include "physics/Viscosity.h"
@@ -183,6 +184,7 @@ class Simulation {
   std::vector<double> wall_tx_, wall_ty_;
   bool free_slip_ = false;
   std::optional<WallFriction_Spalding1961> wall_friction_;
+  std::optional<SideWallFriction_Spalding1961> side_walls_;  // the flume's side walls, if given
   PressureGradientScheme gradient_scheme_;
   WallPressureScheme wall_scheme_;
   std::optional<WallDensity_Adami2012> wall_density_;  // unset: boundary particles at n0

@@ -192,6 +192,17 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
   expect_error(test::minimal_case_text() +
                    "\n[physics]\nkinematic_viscosity = 0.0\nwall_friction = \"spalding1961\"\n",
                19, "give kinematic_viscosity > 0");
+  expect_error(test::minimal_case_text() + "\n[physics]\nside_wall_friction = \"spalding1961\"\n",
+               18, "side_wall_friction: needs the flume's width between its side walls");
+  expect_error(test::minimal_case_text() + "\n[physics]\nflume_width = 0.15\n", 18,
+               "flume_width: is the width between the side walls of side_wall_friction only");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\nside_wall_friction = \"spalding1961\"\nflume_width = 0.0\n",
+               19, "flume_width: value 0 is out of range (0, inf)");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\nkinematic_viscosity = 0.0\nside_wall_friction = "
+                   "\"spalding1961\"\nflume_width = 0.15\n",
+               19, "give kinematic_viscosity > 0");
   expect_error(test::minimal_case_text() +
                    "\n[physics]\nnumber_density = \"summation\"\n"
                    "density_rate = \"randles1996\"\n",

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "neighbours/CellGrid.h"
@@ -13,6 +15,7 @@
 #include "operators/MpsOperators.h"
 #include "physics/EquationOfState.h"
 #include "physics/PredictionSums.h"
+#include "physics/SideWallFriction_Spalding1961.h"
 #include "physics/WallFriction_Spalding1961.h"
 
 namespace wcmps {
@@ -297,6 +300,44 @@ TEST(WallFriction, TheRowsAlongAWallCarryTheWallsStress) {
   std::vector<double> along = u;
   for (std::int64_t j = 0; j < fluid_begin; ++j) along[j] = speed;
   EXPECT_EQ(column(along).x, 0.0);
+}
+
+// The flume's side walls: a flow whose profile across the half-width b/2 is Spalding's law for a
+// friction velocity u_tau has the mean U; the side walls' acceleration read from U is the
+// profile's own stress, -(2/b) u_tau^2, to what the sublayer and the buffer layer take from the
+// log law's mean (z+ < 50 of the half-width's 3750 or 750 here: 0.2 and 1 % of the stress).
+// Along -u, none at rest; in slow (laminar) flow the sublayer's 2e nu U / b of stress.
+TEST(SideWallFriction, TheWidthsMeanVelocityReadsTheProfilesWallStress) {
+  const double nu = 1e-6, b = 0.15;
+  const auto f = SideWallFriction_Spalding1961::make(nu, b);
+  const auto u_plus = [](double z_plus) {  // Spalding's u+ at z+, by bisection
+    double lo = 0.0, hi = std::max(1.0, z_plus);
+    for (int it = 0; it < 100; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (WallFriction_Spalding1961::y_plus(mid) > z_plus ? hi : lo) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  for (const auto& [ut, tolerance] : {std::pair{0.05, 0.005}, std::pair{0.01, 0.015}}) {
+    // The mean over z in [0, b/2], on points crowded towards the wall (z ~ s^3).
+    const int n = 4000;
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const double z0 = 0.5 * b * std::pow(static_cast<double>(k) / n, 3.0);
+      const double z1 = 0.5 * b * std::pow(static_cast<double>(k + 1) / n, 3.0);
+      sum += (z1 - z0) * ut * u_plus(0.5 * (z0 + z1) * ut / nu);
+    }
+    const double mean = sum / (0.5 * b);
+    const Vec2 a = f.acceleration({0.6 * mean, -0.8 * mean});
+    const double expected = 2.0 / b * ut * ut;
+    EXPECT_NEAR(norm(a), expected, tolerance * expected) << "u_tau = " << ut;
+    EXPECT_NEAR(a.x / a.y, 0.6 / -0.8, 1e-12);
+    EXPECT_LT(a.x, 0.0);
+  }
+  EXPECT_EQ(norm(f.acceleration({})), 0.0);
+  const double slow = 1e-6;  // m/s: z+ at b / (2e) about 0.03
+  EXPECT_NEAR(norm(f.acceleration({slow, 0.0})), 2.0 / b * nu * slow / (b / (2.0 * std::exp(1.0))),
+              1e-4 * 2.0 / b * nu * slow / (b / (2.0 * std::exp(1.0))));
 }
 
 TEST(EquationOfState, WholeExponentsBySquaringMatchPow) {

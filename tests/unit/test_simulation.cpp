@@ -185,6 +185,52 @@ velocity = [0.5, 0.0]
   set_thread_count(2);
 }
 
+// The flume's side walls take from the same layer (free-slip bed and walls, no bed friction)
+// the law's stress on both walls over its whole area, (2 / b) tau_w(0.5 m/s) A t, along its
+// motion; the layer's slowing (a few 1e-4 of its speed) and the bed's viscosity (the free-slip
+// run's loss, subtracted) are far within 2 %.
+TEST(Simulation, TheFlumesSideWallsDragEveryParticle) {
+  set_thread_count(1);
+  const std::string text = R"([case]
+name = "layer"
+[particles]
+spacing = 0.01
+[physics]
+sound_speed = 10.0
+gravity = [0.0, 0.0]
+artificial_viscosity_walls = "free-slip"
+[time]
+end = 1.0
+[[wall]]
+polyline = [[0.0, 0.2], [0.0, 0.0], [1.0, 0.0], [1.0, 0.2]]
+solid = "right"
+[[fluid]]
+rectangle = { min = [0.3, 0.0], max = [0.7, 0.05] }
+velocity = [0.5, 0.0]
+)";
+  const double duration = 0.02, width = 0.15;
+  const auto momentum_lost = [&](const std::string& physics) {
+    std::string t = text;
+    t.replace(t.find("[time]"), 6, physics + "[time]");
+    Simulation sim(parse_case_text(t, "layer.toml"), build_scene(parse_case_text(t, "layer.toml")));
+    while (sim.time() < duration) sim.step(duration);
+    const ParticleSet& ps = sim.particles();
+    Vec2 lost;
+    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+      lost += Vec2{0.5 - ps.now.u[i], -ps.now.v[i]} * (0.01 * 0.01);
+    }
+    return lost;
+  };
+  const Vec2 free_slip = momentum_lost("");
+  const Vec2 sides = momentum_lost(
+      "side_wall_friction = \"spalding1961\"\nflume_width = " + std::to_string(width) + "\n");
+  const double expected = SideWallFriction_Spalding1961::make(1e-6, width).law.stress(0.5) * 2.0 /
+                          width * 0.4 * 0.05 * duration;
+  EXPECT_NEAR(sides.x - free_slip.x, expected, 0.02 * expected);
+  EXPECT_NEAR(sides.y, free_slip.y, 0.02 * expected);
+  set_thread_count(2);
+}
+
 // The band's rate reaches the step: on the falling column (its surface drawn down and spreading)
 // it changes n; in still water without gravity (no velocity, both rates 0) it changes nothing.
 TEST(Simulation, TheBandRateActsInTheStep) {
