@@ -111,6 +111,8 @@ EXPERIMENT_LEVELS = {
            "points": ([2.154, 2.231, 2.5, 3.0, 3.65, 4.5, 5.5, 6.0, 6.116, 6.4, 7.167],
                       [0.016, 0.05, 0.113, 0.131, 0.136, 0.181, 0.237, 0.359, 0.5, 0.741, 0.811])},
 }
+# The tank's side walls, 150 mm apart (Lobovsky et al.'s tank: 1610 x 150 x 600 mm).
+SIDE_WALLS = {"side_wall_friction": '"spalding1961"', "flume_width": "0.15"}
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"',
        "wall_density": '"n0"'}
@@ -139,7 +141,17 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
             {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
            ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction spalding1961",
             {"gradient_renormalisation": '"khayyer2011-strain"',
-             "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'})]
+             "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+           ("artificial_viscosity_walls free-slip, wall_friction and side_wall_friction "
+            "spalding1961 (flume_width 0.15)",
+            {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"',
+             **SIDE_WALLS}),
+           ("side_wall_friction spalding1961 (flume_width 0.15)", SIDE_WALLS),
+           ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction and "
+            "side_wall_friction spalding1961 (flume_width 0.15)",
+            {"gradient_renormalisation": '"khayyer2011-strain"',
+             "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"',
+             **SIDE_WALLS})]
 
 
 def case_text(physics, dl, wall_height=0.6):
@@ -378,7 +390,7 @@ def main():
             ax.set_ylabel(f"{g} (x = {GAUGES[g]} m): h / H")
             ax.set_xlim(1.0, 7.5)
             ax.grid(alpha=0.3)
-            ax.legend(fontsize=8)
+        axes[0].legend(fontsize=7, loc="upper left")  # over the dry gauge, before the surge
         axes[1].set_xlabel("t (g/H)^1/2")
         fig.suptitle(f"Lobovsky et al. (2014) dam break, water levels, DL = {args.dl * 1000:g} mm")
         fig.tight_layout()
