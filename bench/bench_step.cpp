@@ -23,6 +23,8 @@
 //   artificial_viscosity_walls = "free-slip" (the walls' tangents read in the prediction's pass).
 // - DamBreak_WallFriction, CaseI_WallFriction, DamBreakSurge_WallFriction: the same with
 //   wall_friction = "spalding1961" too (a pass over each near-wall particle's list, and the law).
+// - DamBreak_SideWalls, DamBreakSurge_SideWalls: the defaults with side_wall_friction =
+//   "spalding1961", flume_width 0.15 m (the law at every fluid particle, one thread).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
 //
@@ -72,6 +74,7 @@ enum class Scheme {
   Strain,
   FreeSlip,
   WallFriction,
+  SideWalls,
   BandRate
 };
 
@@ -92,6 +95,10 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
     spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
   }
   if (scheme == Scheme::WallFriction) spec.wall_friction = WallFrictionScheme::Spalding1961;
+  if (scheme == Scheme::SideWalls) {
+    spec.side_wall_friction = SideWallFrictionScheme::Spalding1961;
+    spec.flume_width = 0.15;  // Lobovsky et al.'s tank
+  }
   if (scheme == Scheme::BandRate) spec.density_rate = DensityRateScheme::Randles1996;
   spec.settle_time = 0.0;
   spec.end_time = 100.0;  // never reached: the benchmark decides how many steps
@@ -191,6 +198,12 @@ void CaseI_WallFriction(benchmark::State& state) {
 }
 void DamBreakSurge_WallFriction(benchmark::State& state) {
   step(state, "dambreak", Scheme::WallFriction, kSurge);
+}
+void DamBreak_SideWalls(benchmark::State& state) {
+  step(state, "dambreak", Scheme::SideWalls);
+}
+void DamBreakSurge_SideWalls(benchmark::State& state) {
+  step(state, "dambreak", Scheme::SideWalls, kSurge);
 }
 void DamBreak_BandRate(benchmark::State& state) {
   step(state, "dambreak", Scheme::BandRate);
@@ -323,6 +336,16 @@ BENCHMARK(CaseI_WallFriction)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreakSurge_WallFriction)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_SideWalls)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_SideWalls)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)
