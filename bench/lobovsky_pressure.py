@@ -277,6 +277,14 @@ def level_metrics(ts, hs, gauge):
             "largest": float(hs[late].max()) if late.any() else math.nan}
 
 
+def two_panels():
+    """A figure of two panels, one over the other, sharing t* (matplotlib off-screen)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--wcmps", default=str(ROOT / "build" / "bin" / "wcmps"))
@@ -357,10 +365,7 @@ def main():
                  for k in ("arrival", "surge", "after", "bore", "largest")]
         print(f"| {name} | " + " | ".join(cells) + f" | {m4['arrival'] - m3['arrival']:.3f} |")
     if args.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+        fig, axes = two_panels()
         for ax, s in zip(axes, ("P1", "P3")):
             for name, (ts, ps, _) in series.items():
                 ax.plot(ts, ps[s], lw=0.8, label=f"wcmps, {name}")
@@ -378,10 +383,7 @@ def main():
         fig.savefig(args.plot, dpi=100)
         print(f"wrote {args.plot}")
     if args.plot_levels:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+        fig, axes = two_panels()
         for ax, g in zip(axes, ("H3", "H4")):
             for name, (ts, _, hs) in series.items():
                 ax.plot(ts, hs[g], lw=0.8, label=f"wcmps, {name}")

@@ -129,13 +129,9 @@ TEST(Simulation, TheGradientRenormalisationActsInTheStep) {
   set_thread_count(2);
 }
 
-// A layer of water sliding at 0.5 m/s along a long bed without gravity: the no-slip wall's
-// artificial viscosity drags it; the free-slip wall's does not (what is left is water's own
-// viscosity, nu = 1e-6); the wall friction takes the law of the wall's stress over the wet
-// bed, tau_w(0.5 m/s, DL/2) L t, from its momentum, and nothing across the bed.
-TEST(Simulation, TheWallsDragIsTheLawOfTheWallsWithFriction) {
-  set_thread_count(1);
-  const std::string text = R"([case]
+// A layer of water 5 cm deep and 40 cm long sliding at 0.5 m/s along a long bed without gravity,
+// for 0.02 s (it moves 1 cm, far from the side walls).
+const char* const kSlidingLayer = R"([case]
 name = "layer"
 [particles]
 spacing = 0.01
@@ -151,19 +147,35 @@ solid = "right"
 rectangle = { min = [0.3, 0.0], max = [0.7, 0.05] }
 velocity = [0.5, 0.0]
 )";
-  const double duration = 0.02;  // s: the layer moves 1 cm, far from the side walls
-  const auto momentum_lost = [&](ArtificialViscosityWalls walls, WallFrictionScheme friction) {
-    CaseSpec spec = parse_case_text(text, "layer.toml");
-    spec.artificial_viscosity_walls = walls;
-    spec.wall_friction = friction;
-    Simulation sim(spec, build_scene(spec));
-    while (sim.time() < duration) sim.step(duration);
-    const ParticleSet& ps = sim.particles();
-    Vec2 lost;  // per unit mass of the layer's particles, times their mass rho DL^2 / rho
-    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
-      lost += Vec2{0.5 - ps.now.u[i], -ps.now.v[i]} * (0.01 * 0.01);
-    }
-    return lost;
+constexpr double kSlidingLayerDuration = 0.02;  // s
+
+/// The momentum the sliding layer loses over its run (per unit width, divided by rho: the sum of
+/// its particles' (0.5 - u, -v) DL^2), with the spec as `adjust` leaves it.
+template <typename Adjust>
+Vec2 sliding_layer_momentum_lost(Adjust adjust) {
+  CaseSpec spec = parse_case_text(kSlidingLayer, "layer.toml");
+  adjust(spec);
+  Simulation sim(spec, build_scene(spec));
+  while (sim.time() < kSlidingLayerDuration) sim.step(kSlidingLayerDuration);
+  const ParticleSet& ps = sim.particles();
+  Vec2 lost;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    lost += Vec2{0.5 - ps.now.u[i], -ps.now.v[i]} * (0.01 * 0.01);
+  }
+  return lost;
+}
+
+// The sliding layer: the no-slip wall's artificial viscosity drags it; the free-slip wall's does
+// not (what is left is water's own viscosity, nu = 1e-6); the wall friction takes the law of the
+// wall's stress over the wet bed, tau_w(0.5 m/s, DL/2) L t, from its momentum, and nothing
+// across the bed.
+TEST(Simulation, TheWallsDragIsTheLawOfTheWallsWithFriction) {
+  set_thread_count(1);
+  const auto momentum_lost = [](ArtificialViscosityWalls walls, WallFrictionScheme friction) {
+    return sliding_layer_momentum_lost([&](CaseSpec& spec) {
+      spec.artificial_viscosity_walls = walls;
+      spec.wall_friction = friction;
+    });
   };
   const Vec2 no_slip = momentum_lost(ArtificialViscosityWalls::NoSlip, WallFrictionScheme::None);
   const Vec2 free_slip =
@@ -171,7 +183,8 @@ velocity = [0.5, 0.0]
   const Vec2 friction =
       momentum_lost(ArtificialViscosityWalls::FreeSlip, WallFrictionScheme::Spalding1961);
   const auto law = WallFriction_Spalding1961::make(1e-6, 0.01, 0.035, 3);
-  const double expected = law.stress(0.5) * 0.4 * duration;  // m^3/s per unit width / rho
+  // m^3/s per unit width / rho
+  const double expected = law.stress(0.5) * 0.4 * kSlidingLayerDuration;
   // The no-slip wall's drag, k u with k ~ 0.015 m/s at c0 = 10 m/s, is many times the law's.
   EXPECT_GT(no_slip.x, 5.0 * expected);
   // The free-slip wall's: water's viscosity through the Laplacian's no-slip wall, about
@@ -191,41 +204,20 @@ velocity = [0.5, 0.0]
 // run's loss, subtracted) are far within 2 %.
 TEST(Simulation, TheFlumesSideWallsDragEveryParticle) {
   set_thread_count(1);
-  const std::string text = R"([case]
-name = "layer"
-[particles]
-spacing = 0.01
-[physics]
-sound_speed = 10.0
-gravity = [0.0, 0.0]
-artificial_viscosity_walls = "free-slip"
-[time]
-end = 1.0
-[[wall]]
-polyline = [[0.0, 0.2], [0.0, 0.0], [1.0, 0.0], [1.0, 0.2]]
-solid = "right"
-[[fluid]]
-rectangle = { min = [0.3, 0.0], max = [0.7, 0.05] }
-velocity = [0.5, 0.0]
-)";
-  const double duration = 0.02, width = 0.15;
-  const auto momentum_lost = [&](const std::string& physics) {
-    std::string t = text;
-    t.replace(t.find("[time]"), 6, physics + "[time]");
-    Simulation sim(parse_case_text(t, "layer.toml"), build_scene(parse_case_text(t, "layer.toml")));
-    while (sim.time() < duration) sim.step(duration);
-    const ParticleSet& ps = sim.particles();
-    Vec2 lost;
-    for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
-      lost += Vec2{0.5 - ps.now.u[i], -ps.now.v[i]} * (0.01 * 0.01);
-    }
-    return lost;
+  const double width = 0.15;
+  const auto momentum_lost = [&](bool sides) {
+    return sliding_layer_momentum_lost([&](CaseSpec& spec) {
+      spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
+      if (sides) {
+        spec.side_wall_friction = SideWallFrictionScheme::Spalding1961;
+        spec.flume_width = width;
+      }
+    });
   };
-  const Vec2 free_slip = momentum_lost("");
-  const Vec2 sides = momentum_lost(
-      "side_wall_friction = \"spalding1961\"\nflume_width = " + std::to_string(width) + "\n");
+  const Vec2 free_slip = momentum_lost(false);
+  const Vec2 sides = momentum_lost(true);
   const double expected = SideWallFriction_Spalding1961::make(1e-6, width).law.stress(0.5) * 2.0 /
-                          width * 0.4 * 0.05 * duration;
+                          width * 0.4 * 0.05 * kSlidingLayerDuration;
   EXPECT_NEAR(sides.x - free_slip.x, expected, 0.02 * expected);
   EXPECT_NEAR(sides.y, free_slip.y, 0.02 * expected);
   set_thread_count(2);
