@@ -27,6 +27,8 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
+from physics_options import FREE_SLIP, STRAIN, WALL_FRICTION  # bench/, beside the script
+
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
 H, RHO, G = 0.7, 1000.0, 9.81
@@ -78,13 +80,12 @@ VARIANTS = [
     ("gradient_renormalisation khayyer2011-deviatoric, c0 x 2", 20,
      {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
     ("gradient_renormalisation khayyer2011-strain", 10,
-     {"gradient_renormalisation": '"khayyer2011-strain"'}),
-    ("artificial_viscosity_walls free-slip", 10, {"artificial_viscosity_walls": '"free-slip"'}),
+     STRAIN),
+    ("artificial_viscosity_walls free-slip", 10, FREE_SLIP),
     ("khayyer2011-strain, artificial_viscosity_walls free-slip", 10,
-     {"gradient_renormalisation": '"khayyer2011-strain"',
-      "artificial_viscosity_walls": '"free-slip"'}),
+     {**STRAIN, **FREE_SLIP}),
     ("artificial_viscosity_walls free-slip, wall_friction spalding1961", 10,
-     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+     {**FREE_SLIP, **WALL_FRICTION}),
 ]
 
 

@@ -78,6 +78,9 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
+# bench/, beside the script
+from physics_options import FREE_SLIP, SIDE_WALLS_LOBOVSKY, STRAIN, WALL_FRICTION
+
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "lobovsky" / "case.toml"
 H, RHO, G, WALL_X = 0.3, 1000.0, 9.81, 1.61
@@ -111,8 +114,6 @@ EXPERIMENT_LEVELS = {
            "points": ([2.154, 2.231, 2.5, 3.0, 3.65, 4.5, 5.5, 6.0, 6.116, 6.4, 7.167],
                       [0.016, 0.05, 0.113, 0.131, 0.136, 0.181, 0.237, 0.359, 0.5, 0.741, 0.811])},
 }
-# The tank's side walls, 150 mm apart (Lobovsky et al.'s tank: 1610 x 150 x 600 mm).
-SIDE_WALLS = {"side_wall_friction": '"spalding1961"', "flume_width": "0.15"}
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"',
        "wall_density": '"n0"'}
@@ -132,26 +133,21 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("gradient_renormalisation khayyer2011-deviatoric",
             {"gradient_renormalisation": '"khayyer2011-deviatoric"'}),
            ("gradient_renormalisation khayyer2011-strain",
-            {"gradient_renormalisation": '"khayyer2011-strain"'}),
-           ("artificial_viscosity_walls free-slip", {"artificial_viscosity_walls": '"free-slip"'}),
+            STRAIN),
+           ("artificial_viscosity_walls free-slip", FREE_SLIP),
            ("gradient_renormalisation khayyer2011-strain, artificial_viscosity_walls free-slip",
-            {"gradient_renormalisation": '"khayyer2011-strain"',
-             "artificial_viscosity_walls": '"free-slip"'}),
+            {**STRAIN, **FREE_SLIP}),
            ("artificial_viscosity_walls free-slip, wall_friction spalding1961",
-            {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+            {**FREE_SLIP, **WALL_FRICTION}),
            ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction spalding1961",
-            {"gradient_renormalisation": '"khayyer2011-strain"',
-             "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+            {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
            ("artificial_viscosity_walls free-slip, wall_friction and side_wall_friction "
             "spalding1961 (flume_width 0.15)",
-            {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"',
-             **SIDE_WALLS}),
-           ("side_wall_friction spalding1961 (flume_width 0.15)", SIDE_WALLS),
+            {**FREE_SLIP, **WALL_FRICTION, **SIDE_WALLS_LOBOVSKY}),
+           ("side_wall_friction spalding1961 (flume_width 0.15)", SIDE_WALLS_LOBOVSKY),
            ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction and "
             "side_wall_friction spalding1961 (flume_width 0.15)",
-            {"gradient_renormalisation": '"khayyer2011-strain"',
-             "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"',
-             **SIDE_WALLS})]
+            {**STRAIN, **FREE_SLIP, **WALL_FRICTION, **SIDE_WALLS_LOBOVSKY})]
 
 
 def case_text(physics, dl, wall_height=0.6):

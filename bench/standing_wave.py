@@ -41,6 +41,8 @@ from pathlib import Path
 
 import numpy as np
 
+from physics_options import FREE_SLIP, STRAIN, WALL_FRICTION  # bench/, beside the script
+
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "standing-wave" / "case.toml"
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
@@ -120,35 +122,33 @@ SCHEMES = [
      {"gradient_renormalisation": '"khayyer2011-deviatoric"', "artificial_viscosity": "0.0"}),
     # 43-44: the same read against each particle's rest shape (2026-12-07)
     ("new, deviatoric hydrostatic gradient of the shape's change",
-     {"gradient_renormalisation": '"khayyer2011-strain"'}),
+     STRAIN),
     ("new, deviatoric hydrostatic gradient of the shape's change, artificial viscosity 0",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.0"}),
+     {**STRAIN, "artificial_viscosity": "0.0"}),
     # 45-46: its memory a fifth and four times as long (the filter's phase lead 1 / (omega tau)
     # five times and a quarter of the default's): what of the loss the filter's phase makes
     ("new, the shape's change, strain_memory 1 s",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "1.0"}),
+     {**STRAIN, "strain_memory": "1.0"}),
     ("new, the shape's change, strain_memory 20 s",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "strain_memory": "20.0"}),
+     {**STRAIN, "strain_memory": "20.0"}),
     # 47-49: its artificial viscosity's alpha a quarter, half and twice the default's: whether
     # the loss follows alpha as the walls' drag would (tools/wall_drag_estimate.py)
     ("new, the shape's change, artificial viscosity 0.005",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.005"}),
+     {**STRAIN, "artificial_viscosity": "0.005"}),
     ("new, the shape's change, artificial viscosity 0.01",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.01"}),
+     {**STRAIN, "artificial_viscosity": "0.01"}),
     ("new, the shape's change, artificial viscosity 0.04",
-     {"gradient_renormalisation": '"khayyer2011-strain"', "artificial_viscosity": "0.04"}),
+     {**STRAIN, "artificial_viscosity": "0.04"}),
     # 50-51: the artificial viscosity's walls free-slip (2026-12-07, session 10): the defaults
     # and the shape's change without the walls' drag of rows 47-49
-    ("new, artificial viscosity's walls free-slip", {"artificial_viscosity_walls": '"free-slip"'}),
+    ("new, artificial viscosity's walls free-slip", FREE_SLIP),
     ("new, the shape's change, artificial viscosity's walls free-slip",
-     {"gradient_renormalisation": '"khayyer2011-strain"',
-      "artificial_viscosity_walls": '"free-slip"'}),
+     {**STRAIN, **FREE_SLIP}),
     # 52-53: the same with the walls' friction of the law of the wall (water's own drag)
     ("new, artificial viscosity's walls free-slip, wall friction",
-     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+     {**FREE_SLIP, **WALL_FRICTION}),
     ("new, the shape's change, artificial viscosity's walls free-slip, wall friction",
-     {"gradient_renormalisation": '"khayyer2011-strain"',
-      "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+     {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

@@ -30,6 +30,8 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
+from physics_options import FREE_SLIP, STRAIN, WALL_FRICTION  # bench/, beside the script
+
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
 H, WIDTH, RHO, G, STRIP, DL = 0.7, 0.5, 1000.0, 9.81, 0.035, 0.01
@@ -41,16 +43,14 @@ VARIANTS = [
     ("gradient_renormalisation khayyer2011-hydrostatic",
      {"gradient_renormalisation": '"khayyer2011-hydrostatic"'}),
     ("gradient_renormalisation khayyer2011-strain",
-     {"gradient_renormalisation": '"khayyer2011-strain"'}),
-    ("artificial_viscosity_walls free-slip", {"artificial_viscosity_walls": '"free-slip"'}),
+     STRAIN),
+    ("artificial_viscosity_walls free-slip", FREE_SLIP),
     ("khayyer2011-strain, artificial_viscosity_walls free-slip",
-     {"gradient_renormalisation": '"khayyer2011-strain"',
-      "artificial_viscosity_walls": '"free-slip"'}),
+     {**STRAIN, **FREE_SLIP}),
     ("artificial_viscosity_walls free-slip, wall_friction spalding1961",
-     {"artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+     {**FREE_SLIP, **WALL_FRICTION}),
     ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction spalding1961",
-     {"gradient_renormalisation": '"khayyer2011-strain"',
-      "artificial_viscosity_walls": '"free-slip"', "wall_friction": '"spalding1961"'}),
+     {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
 ]
 
 
