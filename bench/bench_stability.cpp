@@ -2,7 +2,8 @@
 // the solver's own instability report (InstabilityError: step, time, particle, reason), never a
 // crash or a silent NaN; the table says which.
 //
-//   build/bin/bench_stability [--only still|sweep|jitter|fast_block] [--quick] [--threads 2]
+//   build/bin/bench_stability [--only still|sweep|jitter|fast_block|lattice_shear] [--quick]
+//                             [--threads 2]
 //                             [--out FILE.csv] [--series FILE.csv]
 //
 // - still: still water over the 40-degree bed (cases/hydrostatic-slope, after its 1 s of
@@ -14,6 +15,13 @@
 // - jitter: the dam break and the flat still water started from a lattice jittered by up to
 //   10 % of DL in x and y (fixed seed).
 // - fast_block: case I with the block's measured distances doubled (twice the speed), to 0.4 s.
+// - lattice_shear: why still water started on its lattice moves (docs/validation.md, "What
+//   starts it: the lattice's shear under pressure"). A column of the flat tank's hydrostatic
+//   lattice (cases/hydrostatic, no settling) slid down along its neighbours by 0.05 DL, against
+//   the lattice as built: the column's extra mean acceleration over the first 2 ms, by depth, as
+//   a stiffness k = -(extra acceleration) / slide (1/s^2; < 0: the slide is pushed on, growing
+//   as e^(t sqrt(-k))), and the summed n of one of its particles before and after the slide. Its
+//   own table, not a row of the CSV.
 // --quick shortens every run (still water at DL 20 mm for 1 s after 0.2 s of settling, case I
 // to 0.005 s, the fast block at DL 7 mm) for the smoke tests.
 
@@ -26,10 +34,12 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/Error.h"
 #include "core/Parallel.h"
+#include "operators/Kernel.h"
 #include "scene/CaseParser.h"
 #include "scene/SceneBuilder.h"
 #include "simulation/Simulation.h"
@@ -122,6 +132,104 @@ void jitter(Scene& scene, double dl) {
   }
 }
 
+/// One column of the lattice slid along its neighbours (the lattice_shear probe above).
+struct ShearProbe {
+  int column;                 ///< lattice column, counted from the left wall (0: beside it)
+  double depth_lo, depth_hi;  ///< m below the still water's surface
+  double stiffness;           ///< 1/s^2: -(extra acceleration) / slide; < 0 pushes the slide on
+  /// The summed n of the column's particle nearest mid-depth: slid / as built - 1.
+  double n_change;
+};
+
+/// The fluid ids of lattice column `column` (x in [column, column + 1) DL from the wall at x = 0).
+std::vector<std::int32_t> column_ids(const Scene& scene, int column, double dl) {
+  std::vector<std::int32_t> ids;
+  const ParticleSet& ps = scene.particles;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    const double x = ps.now.x[i] / dl;
+    if (x > column && x < column + 1) ids.push_back(ps.id[i]);
+  }
+  return ids;
+}
+
+/// The summed n of particle i over every particle of the set (brute force: one particle).
+double summed_n(const ParticleSet& ps, std::int64_t i, const Kernel& w) {
+  double n = 0.0;
+  for (std::int64_t j = 0; j < ps.size(); ++j) {
+    if (j == i) continue;
+    n += w(std::hypot(ps.now.x[j] - ps.now.x[i], ps.now.y[j] - ps.now.y[i]));
+  }
+  return n;
+}
+
+/// The flat tank (cases/hydrostatic, no settling) to t = 2 ms with column `column` slid down by
+/// `slide` (m): each depth band's mean vertical acceleration of the column (v / t, from rest).
+std::vector<double> column_accelerations(const CaseSpec& spec, int column, double slide,
+                                         const std::vector<std::pair<double, double>>& bands,
+                                         double* n_mid) {
+  // About 20 steps: long enough for the pair forces to act through the time integration, short
+  // enough that the column moves 2e-6 m of its own (a = 1 m/s^2), 1/250 of the slide: the
+  // response is the linear one.
+  constexpr double kProbeTime = 0.002;  // s
+  Scene scene = build_scene(spec);
+  const std::vector<std::int32_t> ids = column_ids(scene, column, spec.dl);
+  ParticleSet& ps = scene.particles;
+  std::vector<char> in_column(ps.size(), 0);
+  for (const std::int32_t id : ids) in_column[id] = 1;
+  for (std::int64_t i = ps.fluid_begin(); i < ps.size(); ++i) {
+    if (in_column[ps.id[i]]) ps.now.y[i] -= slide;
+  }
+  const double level = scene.fluid_height;  // the bed at y = 0 (cases/hydrostatic)
+  Simulation sim(spec, std::move(scene));
+  {
+    // The column's particle nearest mid-depth, its summed n in the arrangement as started.
+    const ParticleSet& s = sim.particles();
+    std::int64_t mid = -1;
+    for (std::int64_t i = s.fluid_begin(); i < s.size(); ++i) {
+      if (in_column[s.id[i]] &&
+          (mid < 0 || std::abs(s.now.y[i] - 0.5 * level) < std::abs(s.now.y[mid] - 0.5 * level))) {
+        mid = i;
+      }
+    }
+    *n_mid = summed_n(s, mid, sim.operators().kernel());
+  }
+  while (sim.time() < kProbeTime - 1e-12) sim.step(kProbeTime);
+  const ParticleSet& s = sim.particles();
+  std::vector<double> sum(bands.size(), 0.0), count(bands.size(), 0.0);
+  for (std::int64_t i = s.fluid_begin(); i < s.size(); ++i) {
+    if (!in_column[s.id[i]]) continue;
+    const double depth = level - s.now.y[i];
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+      if (depth >= bands[b].first && depth < bands[b].second) {
+        sum[b] += s.now.v[i];
+        count[b] += 1.0;
+      }
+    }
+  }
+  std::vector<double> a(bands.size());
+  for (std::size_t b = 0; b < bands.size(); ++b) a[b] = sum[b] / count[b] / sim.time();
+  return a;
+}
+
+std::vector<ShearProbe> lattice_shear() {
+  CaseSpec spec = load("hydrostatic");
+  spec.settle_time = 0.0;
+  const double slide = 0.05 * spec.dl;
+  const std::vector<std::pair<double, double>> bands = {{0.05, 0.25}, {0.25, 0.45}, {0.45, 0.65}};
+  std::vector<ShearProbe> rows;
+  for (const int column : {0, 1, 10}) {
+    double n_built = 0.0, n_slid = 0.0;
+    const std::vector<double> built = column_accelerations(spec, column, 0.0, bands, &n_built);
+    const std::vector<double> slid = column_accelerations(spec, column, slide, bands, &n_slid);
+    for (std::size_t b = 0; b < bands.size(); ++b) {
+      // The slide is -slide in y; the extra acceleration pushes it back if it is > 0.
+      rows.push_back({column, bands[b].first, bands[b].second, (slid[b] - built[b]) / slide,
+                      n_slid / n_built - 1.0});
+    }
+  }
+  return rows;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,7 +249,8 @@ int main(int argc, char** argv) {
       if (a == "--threads") threads = std::stoi(v);
     } else {
       std::fprintf(stderr,
-                   "usage: bench_stability [--only still|sweep|jitter|fast_block] [--quick] "
+                   "usage: bench_stability [--only still|sweep|jitter|fast_block|lattice_shear] "
+                   "[--quick] "
                    "[--threads N] [--out FILE.csv] [--series FILE.csv]\n");
       return 2;
     }
@@ -227,10 +336,27 @@ int main(int argc, char** argv) {
       report(run("fast_block", "case I, block at twice the measured speed", spec,
                  quick ? 0.01 : 0.4, 0.01, no_change, nothing));
     }
+    if (want("lattice_shear")) {
+      // Its own table (the same with --quick: three short runs of 2 ms).
+      std::printf(
+          "| column | depth (m) | stiffness k (1/s^2) | e-folding time (s) | summed n, slid / "
+          "built - 1 |\n"
+          "|---|---|---|---|---|\n");
+      for (const ShearProbe& r : lattice_shear()) {
+        char efold[32] = "restoring";
+        if (r.stiffness < 0.0)
+          std::snprintf(efold, sizeof efold, "%.3f", 1.0 / std::sqrt(-r.stiffness));
+        std::printf("| %d | %.2f-%.2f | %.0f | %s | %.2e |\n", r.column, r.depth_lo, r.depth_hi,
+                    r.stiffness, efold, r.n_change);
+      }
+      std::fflush(stdout);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_stability: %s\n", e.what());
     return 1;
   }
+
+  if (only == "lattice_shear") return 0;  // its table is all it prints
 
   std::ostringstream csv;
   csv << "test,setting,outcome,t_end_s,t_reached_s,steps,particles,wall_seconds,"
