@@ -28,16 +28,24 @@ CavityMeasure WaterCavity::measure(const double* x, const double* y, const Parti
     if (kind[i] == ParticleKind::Fluid) x0 = std::min(x0, x[i]), x1 = std::max(x1, x[i]);
   }
   if (!(x1 >= x0)) return m;  // no fluid
-  // The water's top in each DL-wide column from x0.
-  const auto column = [&](double px) { return static_cast<std::size_t>((px - x0) / dl_); };
-  std::vector<double> top(column(x1) + 1, -kInf);
+  // The water's top over each column of grid points, x0 + (k + 1/2) h: the highest fluid
+  // particle whose own width, DL, covers it (|x_i - x| <= DL/2).
+  const double h = 0.25 * dl_, dl2 = dl_ * dl_;
+  const auto columns = static_cast<std::int64_t>((x1 - x0) / h) + 1;
+  std::vector<double> top(static_cast<std::size_t>(columns), -kInf);
   for (std::int64_t i = 0; i < count; ++i) {
-    if (kind[i] == ParticleKind::Fluid) top[column(x[i])] = std::max(top[column(x[i])], y[i]);
+    if (kind[i] != ParticleKind::Fluid) continue;
+    const auto first = std::max<std::int64_t>(
+        0, static_cast<std::int64_t>(std::ceil((x[i] - 0.5 * dl_ - x0) / h - 0.5)));
+    const auto last = std::min<std::int64_t>(
+        columns - 1, static_cast<std::int64_t>(std::floor((x[i] + 0.5 * dl_ - x0) / h - 0.5)));
+    for (std::int64_t k = first; k <= last; ++k) {
+      top[static_cast<std::size_t>(k)] = std::max(top[static_cast<std::size_t>(k)], y[i]);
+    }
   }
   CellGrid grid;
   grid.configure({lo_x - dl_, lo_y - dl_}, {hi_x + dl_, hi_y + dl_}, dl_);
   grid.bin(x, y, count);
-  const double h = 0.25 * dl_, dl2 = dl_ * dl_;
   const auto near_a_particle = [&](Vec2 p) {
     // Cells are DL wide: the particles within DL of p are in its cell's 3 x 3 block.
     const int cx = grid.cell_x(p.x), cy = grid.cell_y(p.y);
@@ -56,8 +64,9 @@ CavityMeasure WaterCavity::measure(const double* x, const double* y, const Parti
     }
     return body_outline.empty() || !polygon_contains(body_outline, p);
   };
-  for (double px = x0 + 0.5 * h; px <= x1; px += h) {
-    const double water_top = top[column(px)];
+  for (std::int64_t k = 0; k < columns; ++k) {
+    const double px = x0 + (static_cast<double>(k) + 0.5) * h;
+    const double water_top = top[static_cast<std::size_t>(k)];
     for (double py = lo_y + 0.5 * h; py < water_top; py += h) {
       const Vec2 p{px, py};
       if (near_a_particle(p) || !in_water_region(p)) continue;

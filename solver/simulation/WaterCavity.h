@@ -4,10 +4,14 @@
 /// is near.
 ///
 /// A point counts when it lies below the water's top in its column (the highest fluid particle
-/// of the DL-wide column it is in), on the water's side of every wall surface, outside the
-/// moving body, and farther than DL from every particle, fluid or boundary (water that is whole
-/// leaves no point farther than about DL/sqrt(2) from its particles). The points are those of a
-/// grid of spacing DL/4 over the fluid's extent in x; the area is their number times (DL/4)^2.
+/// whose own width, DL, covers the point's x: |x_i - x| <= DL/2), on the water's side of every
+/// wall surface, outside the moving body, and farther than DL from every particle, fluid or
+/// boundary (water that is whole leaves no point farther than about DL/sqrt(2) from its
+/// particles). The points are those of a grid of spacing DL/4 over the fluid's extent in x; the
+/// area is their number times (DL/4)^2. (Until 2026-12-07, session 13, the column was the fixed
+/// DL-wide bin the point fell in, whose top could be a particle almost DL to the side: it counted
+/// the air in a notch of a steep surface, beside the water and open to the air above it, as
+/// cavity; docs/validation.md, "The cavity's column".)
 /// A cavity that opens over an accelerating body (case I with negative pressures set to zero:
 /// a pocket 6 cm long on the block's top at 0.3 s) measures square centimetres; water that
 /// follows the body measures zero.
