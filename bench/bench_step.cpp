@@ -17,8 +17,9 @@
 //   "khayyer2011-hydrostatic" (one thread, DL 5 and 2 mm): what the option costs.
 // - DamBreak_Deviatoric, CaseI_Deviatoric, DamBreakSurge_Deviatoric: the same with
 //   "khayyer2011-deviatoric" (one thread; the surge at DL 5 mm).
-// - DamBreak_Strain, CaseI_Strain, DamBreakSurge_Strain: the same with "khayyer2011-strain" (its
-//   rest shapes read and advanced in the gradient's pass).
+// - DamBreak_Plain, CaseI_Plain, DamBreakSurge_Plain: the defaults with gradient_renormalisation =
+//   "none", the defaults before 2026-12-07 (session 13): what the default "khayyer2011-strain" (its
+//   rest shapes read and advanced in the gradient's pass) costs.
 // - DamBreak_FreeSlip, CaseI_FreeSlip, DamBreakSurge_FreeSlip: the defaults with
 //   artificial_viscosity_walls = "free-slip" (the walls' tangents read in the prediction's pass).
 // - DamBreak_WallFriction, CaseI_WallFriction, DamBreakSurge_WallFriction: the same with
@@ -71,7 +72,7 @@ enum class Scheme {
   Old,
   Hydrostatic,
   Deviatoric,
-  Strain,
+  Plain,
   FreeSlip,
   WallFriction,
   SideWalls,
@@ -90,7 +91,7 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
   if (scheme == Scheme::Deviatoric) {
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
-  if (scheme == Scheme::Strain) spec.gradient_renormalisation = GradientRenormalisation::Strain;
+  if (scheme == Scheme::Plain) spec.gradient_renormalisation = GradientRenormalisation::None;
   if (scheme == Scheme::FreeSlip || scheme == Scheme::WallFriction) {
     spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
   }
@@ -172,14 +173,14 @@ void CaseI_Deviatoric(benchmark::State& state) {
 void DamBreakSurge_Deviatoric(benchmark::State& state) {
   step(state, "dambreak", Scheme::Deviatoric, kSurge);
 }
-void DamBreak_Strain(benchmark::State& state) {
-  step(state, "dambreak", Scheme::Strain);
+void DamBreak_Plain(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Plain);
 }
-void CaseI_Strain(benchmark::State& state) {
-  step(state, "caseI", Scheme::Strain);
+void CaseI_Plain(benchmark::State& state) {
+  step(state, "caseI", Scheme::Plain);
 }
-void DamBreakSurge_Strain(benchmark::State& state) {
-  step(state, "dambreak", Scheme::Strain, kSurge);
+void DamBreakSurge_Plain(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Plain, kSurge);
 }
 void DamBreak_FreeSlip(benchmark::State& state) {
   step(state, "dambreak", Scheme::FreeSlip);
@@ -295,17 +296,17 @@ BENCHMARK(DamBreakSurge_Deviatoric)
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(DamBreak_Strain)
+BENCHMARK(DamBreak_Plain)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(CaseI_Strain)
+BENCHMARK(CaseI_Plain)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(DamBreakSurge_Strain)
+BENCHMARK(DamBreakSurge_Plain)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

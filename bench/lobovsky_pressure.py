@@ -79,7 +79,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 # bench/, beside the script
-from physics_options import FREE_SLIP, SIDE_WALLS_LOBOVSKY, STRAIN, WALL_FRICTION
+from physics_options import FREE_SLIP, PLAIN, SIDE_WALLS_LOBOVSKY, STRAIN, WALL_FRICTION
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "lobovsky" / "case.toml"
@@ -116,7 +116,7 @@ EXPERIMENT_LEVELS = {
 }
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"',
-       "wall_density": '"n0"'}
+       "wall_density": '"n0"', "gradient_renormalisation": '"none"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("surface_pressure_cap false", {"surface_pressure_cap": "false"}),
            ("gradient_renormalisation khayyer2011",
@@ -147,7 +147,8 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("side_wall_friction spalding1961 (flume_width 0.15)", SIDE_WALLS_LOBOVSKY),
            ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction and "
             "side_wall_friction spalding1961 (flume_width 0.15)",
-            {**STRAIN, **FREE_SLIP, **WALL_FRICTION, **SIDE_WALLS_LOBOVSKY})]
+            {**STRAIN, **FREE_SLIP, **WALL_FRICTION, **SIDE_WALLS_LOBOVSKY}),
+           ("defaults before session 13 (gradient_renormalisation none)", PLAIN)]
 
 
 def case_text(physics, dl, wall_height=0.6):

@@ -1,6 +1,10 @@
 """The [physics] keys of the options the benchmark scripts compare, once for all of them: each a
 dict of case-file key to TOML value text, combined with {**A, **B} (docs/method.md names them)."""
 
+# From 2026-12-07 (session 13) the defaults renormalise the gradient ("khayyer2011-strain"): the
+# rows each script measured before then with "the defaults" (or the defaults with one change) are
+# reproduced with PLAIN added, and each script's last row is those defaults.
+PLAIN = {"gradient_renormalisation": '"none"'}
 STRAIN = {"gradient_renormalisation": '"khayyer2011-strain"'}
 FREE_SLIP = {"artificial_viscosity_walls": '"free-slip"'}
 WALL_FRICTION = {"wall_friction": '"spalding1961"'}

@@ -41,13 +41,13 @@ from pathlib import Path
 
 import numpy as np
 
-from physics_options import FREE_SLIP, STRAIN, WALL_FRICTION  # bench/, beside the script
+from physics_options import FREE_SLIP, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside the script
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "standing-wave" / "case.toml"
 OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
        "free_surface": '"koshizuka1996"', "shifting": '"none"',
-       "wall_density": '"n0"'}
+       "wall_density": '"n0"', "gradient_renormalisation": '"none"'}
 # Rows 0-3 are the table of docs/validation.md; the rest take the default scheme apart, one
 # change each ("time.KEY" goes to [time]).
 SCHEMES = [
@@ -149,6 +149,8 @@ SCHEMES = [
      {**FREE_SLIP, **WALL_FRICTION}),
     ("new, the shape's change, artificial viscosity's walls free-slip, wall friction",
      {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
+    # 54: the defaults before 2026-12-07, session 13 (the gradient not renormalised)
+    ("defaults before session 13 (gradient_renormalisation none)", PLAIN),
 ]
 L, H = 1.0, 0.5
 G = 9.81

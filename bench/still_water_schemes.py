@@ -19,7 +19,7 @@ NO_COLLISION = {'wall_collision': '"none"'}
 # The cures of docs/method.md ("A stabilised step") off: the scheme of commit 3a85288.
 OLD = {'negative_pressure': '"zero"', 'number_density': '"summation"',
        'free_surface': '"koshizuka1996"', 'shifting': '"none"',
-       'wall_density': '"n0"'}
+       'wall_density': '"n0"', 'gradient_renormalisation': '"none"'}
 VARIANTS = [
     ('study: Eq. 2.19, EOS walls, lattice start, alpha = 0',
      {'pressure_gradient': '"koshizuka1998-min"', 'wall_pressure': '"eos"',

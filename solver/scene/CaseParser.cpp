@@ -655,8 +655,12 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     c.shifting = pick(kShiftingSchemes, "shifting", c.shifting);
     c.shifting_in_continuity = r.boolean("shifting_in_continuity", c.shifting_in_continuity);
     c.surface_pressure_cap = r.boolean("surface_pressure_cap", c.surface_pressure_cap);
+    // Its default applies where it can: with another gradient it is "none", and only an
+    // explicit renormalisation there is an error.
     c.gradient_renormalisation = pick(kGradientRenormalisationSchemes, "gradient_renormalisation",
-                                      c.gradient_renormalisation);
+                                      c.pressure_gradient == PressureGradientScheme::Suzuki2007
+                                          ? c.gradient_renormalisation
+                                          : GradientRenormalisation::None);
     if (c.gradient_renormalisation != GradientRenormalisation::None &&
         c.pressure_gradient != PressureGradientScheme::Suzuki2007) {
       r.fail_key("gradient_renormalisation",

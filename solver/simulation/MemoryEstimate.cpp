@@ -37,7 +37,10 @@ MemoryEstimate estimate_memory(const CaseSpec& spec, const ParticleEstimate& cou
   const double n = counts.total();
   m.program = program_bytes;
   m.overhead = MemoryEstimate::kRunOverheadBytes;
-  m.particles = n * MemoryEstimate::kBytesPerParticle;
+  const bool strain = spec.gradient_renormalisation == GradientRenormalisation::Strain &&
+                      spec.pressure_gradient == PressureGradientScheme::Suzuki2007;
+  m.particles = n * (MemoryEstimate::kBytesPerParticle +
+                     (strain ? MemoryEstimate::kStrainBytesPerParticle : 0.0));
   m.list_neighbours = lattice_points_within(spec.re_over_dl + spec.neighbour_skin);
   // Lists are built for the wall and the fluid particles (ghosts need none).
   m.lists = (counts.fluid + counts.wall) * 4.0 * MemoryEstimate::kListGrowth * m.list_neighbours;

@@ -42,6 +42,11 @@ struct MemoryEstimate {
   /// (operators/PairRows.h, 2026-12-06) 64 B.
   static constexpr double kRunOverheadBytes = 9.4e6;
   static constexpr double kBytesPerParticle = 362.0 + (WCMPS_PAIRS_AVX512 ? 64.0 : 0.0);
+  /// With gradient_renormalisation = "khayyer2011-strain" (the default from 2026-12-07, session
+  /// 13) each particle carries its rest shape, two numbers in each of the two states (32 B), and
+  /// the checkpoint's image holds them once more (16 B): case I at DL 2 mm peaked 14.3 MiB higher
+  /// with it than without, 47 B per particle.
+  static constexpr double kStrainBytesPerParticle = 48.0;
   /// heaptrack on case I: the list took 11.25 MB for 50,084 owners x 44 lattice neighbours x 4 B
   /// = 8.8 MB.
   static constexpr double kListGrowth = 1.28;

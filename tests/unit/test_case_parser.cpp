@@ -60,6 +60,7 @@ TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_EQ(c.wall_pressure, WallPressureScheme::FluidExtrapolated);
   EXPECT_EQ(c.wall_density, WallDensityScheme::Adami2012);
   EXPECT_EQ(c.artificial_viscosity_walls, ArtificialViscosityWalls::NoSlip);
+  EXPECT_EQ(c.gradient_renormalisation, GradientRenormalisation::Strain);
   EXPECT_EQ(c.density_rate, DensityRateScheme::Randles1996);
   EXPECT_EQ(c.output_fields.size(), std::size(kFields));
   EXPECT_EQ(c.output_kinds.size(), 3u);
@@ -81,6 +82,15 @@ TEST(CaseParser, TheBandRateDefaultsToSummedWhereItCannotApply) {
   EXPECT_EQ(rate("pressure_gradient = \"koshizuka1998-min\"\n"), DensityRateScheme::Summed);
   EXPECT_EQ(rate("number_density = \"continuity\"\n"), DensityRateScheme::Randles1996);
   EXPECT_EQ(rate("density_rate = \"summed\"\n"), DensityRateScheme::Summed);
+  // likewise the renormalisation: "none" with another gradient, unless it is asked for
+  const auto renormalisation = [](const std::string& physics) {
+    return parse_case_text(test::minimal_case_text() + "\n[physics]\n" + physics, "mini.toml")
+        .gradient_renormalisation;
+  };
+  EXPECT_EQ(renormalisation("pressure_gradient = \"koshizuka1998-min\"\n"),
+            GradientRenormalisation::None);
+  EXPECT_EQ(renormalisation("gradient_renormalisation = \"none\"\n"),
+            GradientRenormalisation::None);
 }
 
 TEST(CaseParser, EveryShippedCaseIsValid) {
