@@ -2,11 +2,12 @@
 // particle sizes, time-step rules (the study's fixed 2.5e-5 s, the adaptive Courant step with the
 // case's Courant number or courant:C with another) and
 // the pressure-gradient schemes the solver offers, and the stabilisation of docs/method.md (the
-// defaults) against the scheme of commit 3a85288 (docs/performance.md).
+// defaults) against the scheme of commit 3a85288 and against the defaults before 2026-12-07,
+// session 13 ("plain": the gradient not renormalised) (docs/performance.md).
 //
 //   build/bin/bench_work_precision --study dambreak [--dl 0.01,0.007,0.005,0.0035]
-//       [--steps courant,fixed,courant:0.8] [--gradients all] [--stabilisation default,3a85288]
-//       [--repeats 3] [--threads 2] [--out FILE.csv]
+//       [--steps courant,fixed,courant:0.8] [--gradients all]
+//       [--stabilisation default,plain,3a85288] [--repeats 3] [--threads 2] [--out FILE.csv]
 //   build/bin/bench_work_precision --study hydrostatic ...
 //   build/bin/bench_work_precision --study caseI [--dl 0.01,0.007,0.005] [--reference-dl 0.0025]
 //       [--reference FILE.csv] [--reference-stabilisation default|3a85288] [--section A]
@@ -353,7 +354,7 @@ int usage(const char* msg) {
   std::fprintf(stderr,
                "bench_work_precision: %s\nusage: bench_work_precision --study "
                "dambreak|hydrostatic|caseI [--dl D1,D2,...] [--steps courant,fixed,courant:C] "
-               "[--gradients all|NAME,...] [--stabilisation default,3a85288] [--repeats N] "
+               "[--gradients all|NAME,...] [--stabilisation default,plain,3a85288] [--repeats N] "
                "[--threads N] [--out FILE.csv]\n"
                "  caseI only: [--reference-dl D] [--reference FILE.csv] "
                "[--reference-stabilisation default|3a85288] [--section NAME] "
@@ -439,8 +440,8 @@ int main(int argc, char** argv) {
     }
   }
   for (const auto& st : split(stabilisations)) {
-    if (st != "default" && st != "3a85288") {
-      return usage(("unknown stabilisation " + st + " (default or 3a85288)").c_str());
+    if (st != "default" && st != "plain" && st != "3a85288") {
+      return usage(("unknown stabilisation " + st + " (default, plain or 3a85288)").c_str());
     }
   }
   // Case I is costly: by default only the gradient its case file names.
@@ -502,6 +503,9 @@ int main(int argc, char** argv) {
           for (const auto& stabilisation : split(stabilisations)) {
             CaseSpec spec = base;
             if (stabilisation == "3a85288") use_scheme_3a85288(spec);
+            if (stabilisation == "plain") {
+              spec.gradient_renormalisation = GradientRenormalisation::None;
+            }
             spec.dl = std::stod(d);
             if (!case_i_study) spec.settle_time = 0.0;
             if (case_i_study && settle >= 0.0) spec.settle_time = settle;
