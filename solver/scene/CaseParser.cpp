@@ -658,9 +658,7 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     // Its default applies where it can: with another gradient it is "none", and only an
     // explicit renormalisation there is an error.
     c.gradient_renormalisation = pick(kGradientRenormalisationSchemes, "gradient_renormalisation",
-                                      c.pressure_gradient == PressureGradientScheme::Suzuki2007
-                                          ? c.gradient_renormalisation
-                                          : GradientRenormalisation::None);
+                                      renormalisation_in_effect(c));
     if (c.gradient_renormalisation != GradientRenormalisation::None &&
         c.pressure_gradient != PressureGradientScheme::Suzuki2007) {
       r.fail_key("gradient_renormalisation",

@@ -321,6 +321,14 @@ inline TimeStepRule settle_step_rule(const CaseSpec& spec, double c0) {
   return rule;
 }
 
+/// The gradient renormalisation a run applies: the case's with the variational gradient, none
+/// with any other (the case parser gives another gradient "none" unless one is asked for, and
+/// refuses one that is; a spec built in code may combine them).
+inline GradientRenormalisation renormalisation_in_effect(const CaseSpec& c) {
+  return c.pressure_gradient == PressureGradientScheme::Suzuki2007 ? c.gradient_renormalisation
+                                                                   : GradientRenormalisation::None;
+}
+
 /// The stabilisation of docs/method.md ("A stabilised step") switched off: negative pressures
 /// set to zero, the summed number density (and so its summed rate), the threshold's free
 /// surface, no shifting, the fluid kept half a DL off the walls, the boundary particles at n0,

@@ -37,8 +37,7 @@ MemoryEstimate estimate_memory(const CaseSpec& spec, const ParticleEstimate& cou
   const double n = counts.total();
   m.program = program_bytes;
   m.overhead = MemoryEstimate::kRunOverheadBytes;
-  const bool strain = spec.gradient_renormalisation == GradientRenormalisation::Strain &&
-                      spec.pressure_gradient == PressureGradientScheme::Suzuki2007;
+  const bool strain = renormalisation_in_effect(spec) == GradientRenormalisation::Strain;
   m.particles = n * (MemoryEstimate::kBytesPerParticle +
                      (strain ? MemoryEstimate::kStrainBytesPerParticle : 0.0));
   m.list_neighbours = lattice_points_within(spec.re_over_dl + spec.neighbour_skin);

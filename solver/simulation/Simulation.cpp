@@ -70,10 +70,7 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
                         : std::nullopt),
       pressure_bound_(PressureBound::make(spec.negative_pressure, spec.pressure_floor)),
       tensile_switch_(spec.negative_pressure == NegativePressure::Sun2018Switch),
-      // The variational gradient's alone (the case parser lets no other gradient have one).
-      renormalisation_(spec.pressure_gradient == PressureGradientScheme::Suzuki2007
-                           ? spec.gradient_renormalisation
-                           : GradientRenormalisation::None),
+      renormalisation_(renormalisation_in_effect(spec)),
       strain_memory_(spec.strain_memory),
       density_scheme_(spec.number_density),
       continuity_(NumberDensity_Jandaghian2020::make(spec.density_diffusion, spec.re(),
