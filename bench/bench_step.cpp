@@ -28,6 +28,8 @@
 //   "spalding1961", flume_width 0.15 m (the law at every fluid particle, one thread).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
+// - DamBreak_Collision, CaseI_Collision, DamBreakSurge_Collision: the defaults with
+//   particle_collision = "jandaghian2021" (one thread): what its pass over the fluid's lists costs.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
@@ -76,7 +78,8 @@ enum class Scheme {
   FreeSlip,
   WallFriction,
   SideWalls,
-  BandRate
+  BandRate,
+  Collision
 };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
@@ -92,6 +95,8 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
   if (scheme == Scheme::Plain) spec.gradient_renormalisation = GradientRenormalisation::None;
+  if (scheme == Scheme::Collision)
+    spec.particle_collision = ParticleCollisionScheme::Jandaghian2021;
   if (scheme == Scheme::FreeSlip || scheme == Scheme::WallFriction) {
     spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
   }
@@ -181,6 +186,15 @@ void CaseI_Plain(benchmark::State& state) {
 }
 void DamBreakSurge_Plain(benchmark::State& state) {
   step(state, "dambreak", Scheme::Plain, kSurge);
+}
+void DamBreak_Collision(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Collision);
+}
+void CaseI_Collision(benchmark::State& state) {
+  step(state, "caseI", Scheme::Collision);
+}
+void DamBreakSurge_Collision(benchmark::State& state) {
+  step(state, "dambreak", Scheme::Collision, kSurge);
 }
 void DamBreak_FreeSlip(benchmark::State& state) {
   step(state, "dambreak", Scheme::FreeSlip);
@@ -307,6 +321,21 @@ BENCHMARK(CaseI_Plain)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(DamBreakSurge_Plain)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreak_Collision)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(CaseI_Collision)
+    ->ArgNames({"DL_um", "threads"})
+    ->ArgsProduct({{5000, 2000}, {1}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DamBreakSurge_Collision)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

@@ -79,7 +79,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 # bench/, beside the script
-from physics_options import FREE_SLIP, PLAIN, SIDE_WALLS_LOBOVSKY, STRAIN, WALL_FRICTION
+from physics_options import (FREE_SLIP, PARTICLE_COLLISION, PLAIN, SIDE_WALLS_LOBOVSKY, STRAIN,
+                             WALL_FRICTION)
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "lobovsky" / "case.toml"
@@ -148,7 +149,17 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction and "
             "side_wall_friction spalding1961 (flume_width 0.15)",
             {**STRAIN, **FREE_SLIP, **WALL_FRICTION, **SIDE_WALLS_LOBOVSKY}),
-           ("defaults before session 13 (gradient_renormalisation none)", PLAIN)]
+           ("defaults before session 13 (gradient_renormalisation none)", PLAIN),
+           # 20 (session 14): the particle collision between fluid particles
+           ("particle_collision jandaghian2021", PARTICLE_COLLISION),
+           ("particle_collision jandaghian2021, l0 0.8 DL",
+            {**PARTICLE_COLLISION, "particle_collision_distance": "0.8"}),
+           ("particle_collision jandaghian2021, no repulsion",
+            {**PARTICLE_COLLISION, "particle_collision_lambda": "0.0",
+             "particle_collision_min_pressure": "0.0"}),
+           ("particle_collision jandaghian2021, l0 0.8 DL, elastic",
+            {**PARTICLE_COLLISION, "particle_collision_distance": "0.8",
+             "particle_collision_restitution": "1.0"})]
 
 
 def case_text(physics, dl, wall_height=0.6):

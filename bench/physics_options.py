@@ -10,3 +10,5 @@ FREE_SLIP = {"artificial_viscosity_walls": '"free-slip"'}
 WALL_FRICTION = {"wall_friction": '"spalding1961"'}
 # The flume's side walls of Lobovsky et al.'s tank, 150 mm apart (1610 x 150 x 600 mm).
 SIDE_WALLS_LOBOVSKY = {"side_wall_friction": '"spalding1961"', "flume_width": "0.15"}
+# The dynamic particle collision between fluid particles (Jandaghian et al. 2021).
+PARTICLE_COLLISION = {"particle_collision": '"jandaghian2021"'}

@@ -41,7 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
-from physics_options import FREE_SLIP, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside the script
+from physics_options import FREE_SLIP, PARTICLE_COLLISION, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "standing-wave" / "case.toml"
@@ -151,6 +151,15 @@ SCHEMES = [
      {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
     # 54: the defaults before 2026-12-07, session 13 (the gradient not renormalised)
     ("defaults before session 13 (gradient_renormalisation none)", PLAIN),
+    # 55: the particle collision between fluid particles (session 14)
+    ("new, particle collision jandaghian2021", PARTICLE_COLLISION),
+    # 56-57: its collision distance 0.8 DL (pairs of a wave's strain left alone); its collision
+    # part alone (lambda 0, p_min 0)
+    ("new, particle collision jandaghian2021, l0 0.8 DL",
+     {**PARTICLE_COLLISION, "particle_collision_distance": "0.8"}),
+    ("new, particle collision jandaghian2021, no repulsion",
+     {**PARTICLE_COLLISION, "particle_collision_lambda": "0.0",
+      "particle_collision_min_pressure": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81

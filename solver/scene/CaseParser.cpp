@@ -610,6 +610,31 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                                         r.choice("wall_collision", collisions.front(), collisions));
     c.collision_distance = r.number("collision_distance", 0.8, 0.5, 1.0, true, true);
     c.collision_restitution = r.number("collision_restitution", 0.2, 0.0, 1.0);
+    const auto pairs = scheme_keys(kParticleCollisionSchemes);
+    c.particle_collision = *scheme_from_key(
+        kParticleCollisionSchemes,
+        r.choice("particle_collision",
+                 std::string(scheme_key(kParticleCollisionSchemes, c.particle_collision)), pairs));
+    // Its constants, each an error without it (they would change nothing).
+    const auto collision_constant = [&](const std::string& key, double lo, double hi,
+                                        bool lo_open) {
+      const auto value = r.optional_number(key, lo, hi, lo_open);
+      if (value && c.particle_collision == ParticleCollisionScheme::None) {
+        r.fail_key(key, "is a constant of particle_collision = \"jandaghian2021\" only");
+      }
+      return value;
+    };
+    if (const auto l0 = collision_constant("particle_collision_distance", 0.5, 1.0, true)) {
+      c.particle_collision_distance = *l0;
+    }
+    if (const auto lambda = collision_constant("particle_collision_lambda", 0.0, 1.0, false)) {
+      c.particle_collision_lambda = *lambda;
+    }
+    if (const auto e = collision_constant("particle_collision_restitution", 0.0, 1.0, false)) {
+      c.particle_collision_restitution = *e;
+    }
+    c.particle_collision_min_pressure =
+        collision_constant("particle_collision_min_pressure", 0.0, kInf, false);
     // A scheme by its key; absent, the CaseSpec's default (`value` as constructed).
     const auto pick = [&](const auto& table, const std::string& key, auto value) {
       return *scheme_from_key(

@@ -18,6 +18,7 @@
 #include "physics/FreeSurface_Marrone2010.h"
 #include "physics/NegativePressure_Sun2018.h"
 #include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleCollision_Jandaghian2021.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PressureGradient.h"
 #include "physics/SideWallFriction_Spalding1961.h"
@@ -249,6 +250,14 @@ struct CaseSpec {
   WallCollisionScheme wall_collision = WallCollisionScheme::Koshizuka1998;
   double collision_distance = 0.8;     ///< x DL: fluid-boundary pairs closer than this collide
   double collision_restitution = 0.2;  ///< e of a fluid particle striking a boundary
+  /// Fluid-fluid pairs closer than particle_collision_distance (physics/
+  /// ParticleCollision_Jandaghian2021.h).
+  ParticleCollisionScheme particle_collision = ParticleCollisionScheme::None;
+  double particle_collision_distance = 0.8;     ///< l0 / DL
+  double particle_collision_lambda = 0.05;      ///< the background pressure's share of |p_i + p_j|
+  double particle_collision_restitution = 0.0;  ///< e of a fluid pair's collision
+  /// Pa: the background pressure's least value; unset: rho0 |g| DL.
+  std::optional<double> particle_collision_min_pressure;
 
   // [time]
   double end_time = 0.0;  ///< s

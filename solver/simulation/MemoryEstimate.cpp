@@ -38,8 +38,10 @@ MemoryEstimate estimate_memory(const CaseSpec& spec, const ParticleEstimate& cou
   m.program = program_bytes;
   m.overhead = MemoryEstimate::kRunOverheadBytes;
   const bool strain = renormalisation_in_effect(spec) == GradientRenormalisation::Strain;
+  const bool collision = spec.particle_collision != ParticleCollisionScheme::None;
   m.particles = n * (MemoryEstimate::kBytesPerParticle +
-                     (strain ? MemoryEstimate::kStrainBytesPerParticle : 0.0));
+                     (strain ? MemoryEstimate::kStrainBytesPerParticle : 0.0) +
+                     (collision ? MemoryEstimate::kCollisionBytesPerParticle : 0.0));
   m.list_neighbours = lattice_points_within(spec.re_over_dl + spec.neighbour_skin);
   // Lists are built for the wall and the fluid particles (ghosts need none).
   m.lists = (counts.fluid + counts.wall) * 4.0 * MemoryEstimate::kListGrowth * m.list_neighbours;

@@ -47,6 +47,9 @@ struct MemoryEstimate {
   /// the checkpoint's image holds them once more (16 B): case I at DL 2 mm peaked 14.3 MiB higher
   /// with it than without, 47 B per particle.
   static constexpr double kStrainBytesPerParticle = 48.0;
+  /// With particle_collision (physics/ParticleCollision_Jandaghian2021.h): each particle's
+  /// velocity change of the step, two numbers (16 B; nothing in the checkpoint).
+  static constexpr double kCollisionBytesPerParticle = 16.0;
   /// heaptrack on case I: the list took 11.25 MB for 50,084 owners x 44 lattice neighbours x 4 B
   /// = 8.8 MB.
   static constexpr double kListGrowth = 1.28;

@@ -136,6 +136,19 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
     grad_y_.resize(ps.size());
   }
   if (shift_in_continuity_) ps.track_shift();
+  if (spec.particle_collision == ParticleCollisionScheme::Jandaghian2021) {
+    // p_max: the hydrostatic pressure at the foot of the water
+    // (ParticleCollision_Jandaghian2021.h).
+    particle_collision_ = ParticleCollision_Jandaghian2021{
+        spec.particle_collision_distance * spec.dl,
+        spec.particle_collision_lambda,
+        spec.particle_collision_min_pressure.value_or(spec.density * norm(spec.gravity) * spec.dl),
+        spec.density * norm(spec.gravity) * scene_.fluid_height,
+        spec.density,
+        spec.particle_collision_restitution};
+    collision_du_.resize(ps.size());
+    collision_dv_.resize(ps.size());
+  }
   if (surface_cap_) ps.track_strikes();
   if (renormalisation_ == GradientRenormalisation::Strain) ps.track_rest_shape();
   free_slip_ = spec.artificial_viscosity_walls == ArtificialViscosityWalls::FreeSlip &&
@@ -336,7 +349,10 @@ void Simulation::step(double t_stop) {
   }
   timer_.time(Phase::NumberDensity, [&] { compute_number_density(); });
   timer_.time(Phase::Pressure, [&] { compute_pressure(dt); });
-  timer_.time(Phase::Correct, [&] { correct(dt); });
+  timer_.time(Phase::Correct, [&] {
+    correct(dt);
+    if (particle_collision_) collide_particles(dt);
+  });
   timer_.time(Phase::Move, [&] { move(dt); });
   timer_.time(Phase::Check, [&] { check_stability(dt); });
 
@@ -925,6 +941,23 @@ void Simulation::correct(double dt) {
     if (body_) body_force_next_ = body_force(scheme, input);
   });
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
+}
+
+void Simulation::collide_particles(double dt) {
+  // Two passes: every change reads the corrected velocities of the step, whatever the order.
+  ParticleSet& ps = scene_.particles;
+  ParticleState& t = ps.next;
+  const std::int64_t fluid = ps.fluid_begin();
+  parallel_for(fluid, ps.size(), [&](std::int64_t i) {
+    const Vec2 du = particle_collision_->change(i, neighbours_.of(i), t.x.data(), t.y.data(),
+                                                t.u.data(), t.v.data(), t.p.data(), fluid, dt);
+    collision_du_[i] = du.x;
+    collision_dv_[i] = du.y;
+  });
+  parallel_for(fluid, ps.size(), [&](std::int64_t i) {
+    t.u[i] += collision_du_[i];
+    t.v[i] += collision_dv_[i];
+  });
 }
 
 void Simulation::move(double dt) {

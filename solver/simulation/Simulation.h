@@ -19,6 +19,7 @@
 #include "physics/FreeSurface_Marrone2010.h"
 #include "physics/NegativePressure_Sun2018.h"
 #include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleCollision_Jandaghian2021.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
 #include "physics/PredictionSumsAvx512.h"
@@ -113,6 +114,7 @@ class Simulation {
   void compute_pressure(double dt);   // free surface, EOS, walls, ghosts (Eq. 2.9, 2.10)
   void correct(double dt);            // u^{n+1} = u* - dt grad p / rho (Eq. 2.15, 2.19),
                                       // then wall collisions (Koshizuka 1998)
+  void collide_particles(double dt);  // fluid pairs closer than l0 (Jandaghian et al. 2021)
   void move(double dt);               // r^{n+1} = r^n + dt u^{n+1} (Eq. 2.20), + shifting
   void check_stability(double dt);    // NaN, domain, density, walls, displacement
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
@@ -214,6 +216,10 @@ class Simulation {
   SurfacePressureCap cap_rule_;  // its threshold of a struck particle
   WallCollisionScheme collision_scheme_;
   WallCollision_Koshizuka1998 collision_;
+  // Fluid-fluid pairs closer than l0 (physics/ParticleCollision_Jandaghian2021.h): set when on,
+  // with the velocity changes of the step's pass.
+  std::optional<ParticleCollision_Jandaghian2021> particle_collision_;
+  std::vector<double> collision_du_, collision_dv_;
   TimeStepRule rule_, settle_rule_;
   Vec2 gravity_;
   double density_;

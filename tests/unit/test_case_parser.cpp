@@ -199,6 +199,12 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "\n[physics]\ngradient_renormalisation = \"khayyer2011-strain\"\n"
                    "strain_memory = 0.0\n",
                19, "strain_memory: value 0 is out of range (0, inf)");
+  expect_error(test::minimal_case_text() + "\n[physics]\nparticle_collision_distance = 0.8\n", 18,
+               "is a constant of particle_collision = \"jandaghian2021\" only");
+  expect_error(test::minimal_case_text() +
+                   "\n[physics]\nparticle_collision = \"jandaghian2021\"\n"
+                   "particle_collision_distance = 0.4\n",
+               19, "particle_collision_distance: value 0.4 is out of range (0.5, 1]");
   expect_error(test::minimal_case_text() +
                    "\n[physics]\nkinematic_viscosity = 0.0\nwall_friction = \"spalding1961\"\n",
                19, "give kinematic_viscosity > 0");

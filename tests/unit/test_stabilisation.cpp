@@ -24,6 +24,7 @@
 #include "physics/FreeSurface_Marrone2010.h"
 #include "physics/NegativePressure_Sun2018.h"
 #include "physics/NumberDensity_Jandaghian2020.h"
+#include "physics/ParticleCollision_Jandaghian2021.h"
 #include "physics/ParticleShifting_Sun2017.h"
 #include "physics/PredictionSums.h"
 #include "physics/PredictionSumsAvx512.h"
@@ -746,6 +747,73 @@ TEST(Shifting, MovesSurfaceParticlesAlongTheSurfaceOnly) {
   EXPECT_GT(free.y, 0.0);
   EXPECT_EQ(along.y, 0.0);
   EXPECT_EQ(along.x, free.x);
+}
+
+/// The particle collision of the tests: l0 = DL, lambda 0.05, p_min 100 Pa, p_max 10 kPa.
+ParticleCollision_Jandaghian2021 dpc() {
+  return {kDl, 0.05, 100.0, 10000.0, 1000.0};
+}
+
+TEST(ParticleCollision, LeavesTheLatticeAlone) {
+  // Pairs DL apart are at the collision distance, where the weight vanishes: water at rest on
+  // its lattice is not touched, under any pressure.
+  Cloud c = block(9, 9);
+  const std::vector<double> p(c.x.size(), 5000.0);
+  c.u.assign(c.x.size(), 0.3);  // a uniform flow: no pair approaches
+  for (const std::int64_t i : {at(4, 4, 9), at(0, 0, 9), at(8, 3, 9)}) {
+    const Vec2 du = dpc().change(i, c.list.of(i), c.x.data(), c.y.data(), c.u.data(), c.v.data(),
+                                 p.data(), 0, 1.0e-4);
+    // Zero up to the round-off of the lattice's coordinates: a pair 1e-18 m inside l0 weighs
+    // (1 - q)^4 ~ 1e-60, a change of ~1e-32 m/s (against 1e-3 m/s of a pair at 0.9 DL).
+    EXPECT_NEAR(du.x, 0.0, 1e-20);
+    EXPECT_NEAR(du.y, 0.0, 1e-20);
+  }
+}
+
+TEST(ParticleCollision, AnApproachingPairLosesItsApproachAndKeepsItsMomentum) {
+  Cloud c;
+  c.add(0.0, 0.0);
+  c.add(0.4 * kDl, 0.0);
+  c.build();
+  c.u = {1.0, -0.5};
+  c.v = {0.3, 0.1};
+  const std::vector<double> p(2, 2000.0);
+  const auto change = [&](std::int64_t i) {
+    return dpc().change(i, c.list.of(i), c.x.data(), c.y.data(), c.u.data(), c.v.data(), p.data(),
+                        0, 1.0e-4);
+  };
+  const Vec2 a = change(0), b = change(1);
+  // Inside l0/2 the whole approach speed (1.5 m/s along x) goes, half from each; the motion
+  // across the pair's line is kept, and so is the pair's momentum.
+  EXPECT_NEAR(c.u[0] + a.x, c.u[1] + b.x, 1e-12);
+  EXPECT_NEAR(a.x, -0.75, 1e-12);
+  EXPECT_EQ(a.y, 0.0);
+  EXPECT_EQ(b.y, 0.0);
+  EXPECT_NEAR(a.x + b.x, 0.0, 1e-12);
+}
+
+TEST(ParticleCollision, PartsAPairAtTheSurfaceByTheLeastPressure) {
+  // Two surface particles (p = 0) at rest DL/2 apart: parted by p_min, equal and opposite.
+  Cloud c;
+  c.add(0.0, 0.0);
+  c.add(0.0, 0.5 * kDl);
+  c.build();
+  const std::vector<double> p(2, 0.0);
+  const double dt = 1.0e-4;
+  const auto change = [&](std::int64_t i) {
+    return dpc().change(i, c.list.of(i), c.x.data(), c.y.data(), c.u.data(), c.v.data(), p.data(),
+                        0, dt);
+  };
+  const Vec2 a = change(0), b = change(1);
+  // chi = 1 at l0/2: du = dt / rho p_min / r, along the pair's line.
+  EXPECT_NEAR(a.y, -dt / 1000.0 * 100.0 / (0.5 * kDl), 1e-15);
+  EXPECT_EQ(a.x, 0.0);
+  EXPECT_NEAR(a.y + b.y, 0.0, 1e-15);
+  // Deep in the water a pair's own pressure sets it, up to lambda p_max: 0.05 x 10 kPa.
+  const std::vector<double> deep(2, 20000.0);
+  const Vec2 d = dpc().change(0, c.list.of(0), c.x.data(), c.y.data(), c.u.data(), c.v.data(),
+                              deep.data(), 0, dt);
+  EXPECT_NEAR(d.y, -dt / 1000.0 * 500.0 / (0.5 * kDl), 1e-15);
 }
 
 TEST(TensileSwitch, AUniformTensionDoesNotPullParticlesTogether) {
