@@ -159,7 +159,9 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
              "particle_collision_min_pressure": "0.0"}),
            ("particle_collision jandaghian2021, l0 0.8 DL, elastic",
             {**PARTICLE_COLLISION, "particle_collision_distance": "0.8",
-             "particle_collision_restitution": "1.0"})]
+             "particle_collision_restitution": "1.0"}),
+           ("particle_collision jandaghian2021, p_min 0",
+            {**PARTICLE_COLLISION, "particle_collision_min_pressure": "0.0"})]
 
 
 def case_text(physics, dl, wall_height=0.6):

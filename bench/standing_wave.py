@@ -160,6 +160,9 @@ SCHEMES = [
     ("new, particle collision jandaghian2021, no repulsion",
      {**PARTICLE_COLLISION, "particle_collision_lambda": "0.0",
       "particle_collision_min_pressure": "0.0"}),
+    # 58: l0 0.8 DL with no least repulsion (p_min 0: surface pairs, at p = 0, only collide)
+    ("new, particle collision jandaghian2021, p_min 0",
+     {**PARTICLE_COLLISION, "particle_collision_min_pressure": "0.0"}),
 ]
 L, H = 1.0, 0.5
 G = 9.81
