@@ -610,11 +610,13 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
                                         r.choice("wall_collision", collisions.front(), collisions));
     c.collision_distance = r.number("collision_distance", 0.8, 0.5, 1.0, true, true);
     c.collision_restitution = r.number("collision_restitution", 0.2, 0.0, 1.0);
-    const auto pairs = scheme_keys(kParticleCollisionSchemes);
-    c.particle_collision = *scheme_from_key(
-        kParticleCollisionSchemes,
-        r.choice("particle_collision",
-                 std::string(scheme_key(kParticleCollisionSchemes, c.particle_collision)), pairs));
+    // A scheme by its key; absent, the CaseSpec's default (`value` as constructed).
+    const auto pick = [&](const auto& table, const std::string& key, auto value) {
+      return *scheme_from_key(
+          table, r.choice(key, std::string(scheme_key(table, value)), scheme_keys(table)));
+    };
+    c.particle_collision =
+        pick(kParticleCollisionSchemes, "particle_collision", c.particle_collision);
     // Its constants, each an error without it (they would change nothing).
     const auto collision_constant = [&](const std::string& key, double lo, double hi,
                                         bool lo_open) {
@@ -635,11 +637,6 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     }
     c.particle_collision_min_pressure =
         collision_constant("particle_collision_min_pressure", 0.0, kInf, false);
-    // A scheme by its key; absent, the CaseSpec's default (`value` as constructed).
-    const auto pick = [&](const auto& table, const std::string& key, auto value) {
-      return *scheme_from_key(
-          table, r.choice(key, std::string(scheme_key(table, value)), scheme_keys(table)));
-    };
     c.negative_pressure = pick(kNegativePressureSchemes, "negative_pressure", c.negative_pressure);
     c.pressure_floor = r.number("pressure_floor", c.pressure_floor, -kInf, 0.0);
     c.wall_density = pick(kWallDensitySchemes, "wall_density", c.wall_density);
