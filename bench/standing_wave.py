@@ -151,14 +151,17 @@ SCHEMES = [
      {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
     # 54: the defaults before 2026-12-07, session 13 (the gradient not renormalised)
     ("defaults before session 13 (gradient_renormalisation none)", PLAIN),
-    # 55: the particle collision between fluid particles (session 14)
-    ("new, particle collision jandaghian2021", PARTICLE_COLLISION),
+    # 55: the particle collision between fluid particles (session 14), l0 = DL (as measured
+    # then; the option's default became 0.8 DL after it)
+    ("new, particle collision jandaghian2021, l0 DL",
+     {**PARTICLE_COLLISION, "particle_collision_distance": "1.0"}),
     # 56-57: its collision distance 0.8 DL (pairs of a wave's strain left alone); its collision
-    # part alone (lambda 0, p_min 0)
+    # part alone (lambda 0, p_min 0, l0 DL)
     ("new, particle collision jandaghian2021, l0 0.8 DL",
      {**PARTICLE_COLLISION, "particle_collision_distance": "0.8"}),
-    ("new, particle collision jandaghian2021, no repulsion",
-     {**PARTICLE_COLLISION, "particle_collision_lambda": "0.0",
+    ("new, particle collision jandaghian2021, l0 DL, no repulsion",
+     {**PARTICLE_COLLISION, "particle_collision_distance": "1.0",
+      "particle_collision_lambda": "0.0",
       "particle_collision_min_pressure": "0.0"}),
     # 58: l0 0.8 DL with no least repulsion (p_min 0: surface pairs, at p = 0, only collide)
     ("new, particle collision jandaghian2021, p_min 0",
