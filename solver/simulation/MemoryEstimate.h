@@ -48,8 +48,10 @@ struct MemoryEstimate {
   /// with it than without, 47 B per particle.
   static constexpr double kStrainBytesPerParticle = 48.0;
   /// With particle_collision (physics/ParticleCollision_Jandaghian2021.h): each particle's
-  /// velocity change of the step, two numbers (16 B; nothing in the checkpoint).
-  static constexpr double kCollisionBytesPerParticle = 16.0;
+  /// velocity change of the step, two numbers (16 B), and its candidates of the list build: an
+  /// offset (8 B) and their ids, 0.5 to 1.2 a particle in case I's frames (fluid pairs within
+  /// DL), 8 B allowed; nothing in the checkpoint.
+  static constexpr double kCollisionBytesPerParticle = 32.0;
   /// heaptrack on case I: the list took 11.25 MB for 50,084 owners x 44 lattice neighbours x 4 B
   /// = 8.8 MB.
   static constexpr double kListGrowth = 1.28;

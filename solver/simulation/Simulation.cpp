@@ -490,6 +490,7 @@ void Simulation::load(StateReader& in) {
   neighbours_.build(grid_, x_built_.data(), y_built_.data(), ps.size(), list_cutoff(),
                     list_owners_);
   find_fluid_near_walls();
+  find_close_fluid_pairs();
   settle_walls_out_of_reach();
   built_ = true;
   builds_ = 0;
@@ -523,6 +524,7 @@ void Simulation::rebuild_neighbours() {
   drift_ = 0.0;
   if (body_) body_built_s_ = body_->state().s;
   find_fluid_near_walls();
+  find_close_fluid_pairs();
   settle_walls_out_of_reach();
   built_ = true;
   ++builds_;
@@ -943,14 +945,45 @@ void Simulation::correct(double dt) {
   pairs_visited_ += neighbours_.pair_count(ps.fluid_begin(), ps.size());
 }
 
+void Simulation::find_close_fluid_pairs() {
+  if (!particle_collision_) return;
+  // From the full lists, at the build positions: a pair farther than l0 + skin apart then is
+  // farther than l0 at r* (each particle has moved less than skin/2). About one build in ten
+  // steps, so the collision's pass walks a few candidates a step instead of the whole list.
+  const ParticleSet& ps = scene_.particles;
+  const std::int64_t fluid = ps.fluid_begin(), n = ps.size();
+  const double reach = particle_collision_->distance + skin_;
+  const double reach2 = reach * reach;
+  const auto close = [&](std::int64_t i, std::int32_t j) {
+    return j >= fluid && j != i &&
+           sq(x_built_[i] - x_built_[j]) + sq(y_built_[i] - y_built_[j]) < reach2;
+  };
+  close_begin_.assign(static_cast<std::size_t>(n - fluid + 1), 0);
+  parallel_for(fluid, n, [&](std::int64_t i) {
+    std::int64_t count = 0;
+    for (const std::int32_t j : neighbours_.of(i)) count += close(i, j);
+    close_begin_[i - fluid + 1] = count;
+  });
+  for (std::size_t k = 1; k < close_begin_.size(); ++k) close_begin_[k] += close_begin_[k - 1];
+  close_ids_.resize(static_cast<std::size_t>(close_begin_.back()));
+  parallel_for(fluid, n, [&](std::int64_t i) {
+    std::int32_t* out = close_ids_.data() + close_begin_[i - fluid];
+    for (const std::int32_t j : neighbours_.of(i)) {
+      if (close(i, j)) *out++ = j;
+    }
+  });
+}
+
 void Simulation::collide_particles(double dt) {
   // Two passes: every change reads the corrected velocities of the step, whatever the order.
   ParticleSet& ps = scene_.particles;
   ParticleState& t = ps.next;
   const std::int64_t fluid = ps.fluid_begin();
   parallel_for(fluid, ps.size(), [&](std::int64_t i) {
-    const Vec2 du = particle_collision_->change(i, neighbours_.of(i), t.x.data(), t.y.data(),
-                                                t.u.data(), t.v.data(), t.p.data(), fluid, dt);
+    const std::int32_t* ids = close_ids_.data();
+    const IdRange candidates{ids + close_begin_[i - fluid], ids + close_begin_[i - fluid + 1]};
+    const Vec2 du = particle_collision_->change(i, candidates, t.x.data(), t.y.data(), t.u.data(),
+                                                t.v.data(), t.p.data(), fluid, dt);
     collision_du_[i] = du.x;
     collision_dv_[i] = du.y;
   });

@@ -120,6 +120,7 @@ class Simulation {
   void reorder_by_cell();             // cache locality, at rebuilds every sort_interval steps
   void compute_initial_pressure();    // n and p of the initial state, for its frame
   void find_fluid_near_walls();       // at rebuilds: near_wall_, near_body_, walls_in_reach_
+  void find_close_fluid_pairs();      // at rebuilds: the particle collision's candidates
   /// The wall particles' phases of a step, for the wall particles listed: the summed n (and G
   /// for the surface scan), which of them are wet, their pressure and free-surface flag.
   void sum_walls(const std::vector<std::int32_t>& walls);
@@ -220,6 +221,11 @@ class Simulation {
   // with the velocity changes of the step's pass.
   std::optional<ParticleCollision_Jandaghian2021> particle_collision_;
   std::vector<double> collision_du_, collision_dv_;
+  // Its candidates, found at each list build: fluid particle i's fluid neighbours within
+  // l0 + skin then, close_ids_[close_begin_[i - fluid_begin] ... close_begin_[i - fluid_begin + 1]).
+  // No pair closer than l0 at r* is missing while no particle has moved skin/2 (the lists' rule).
+  std::vector<std::int64_t> close_begin_;
+  std::vector<std::int32_t> close_ids_;
   TimeStepRule rule_, settle_rule_;
   Vec2 gravity_;
   double density_;
