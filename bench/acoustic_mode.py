@@ -27,14 +27,11 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
-from physics_options import FREE_SLIP, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside the script
+from physics_options import FREE_SLIP, NO_COLLISION, OLD, PLAIN, STRAIN, WALL_FRICTION  # bench/
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
 H, RHO, G = 0.7, 1000.0, 9.81
-OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"',
-       "wall_density": '"n0"', "gradient_renormalisation": '"none"'}
 # (label, sound_speed_factor, extra [physics] keys)
 VARIANTS = [
     ("defaults", 10, {}),
@@ -87,6 +84,7 @@ VARIANTS = [
     ("artificial_viscosity_walls free-slip, wall_friction spalding1961", 10,
      {**FREE_SLIP, **WALL_FRICTION}),
     ("defaults before session 13 (gradient_renormalisation none)", 10, PLAIN),
+    ("defaults before session 15 (particle_collision none)", 10, NO_COLLISION),
 ]
 
 

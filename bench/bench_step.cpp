@@ -28,8 +28,9 @@
 //   "spalding1961", flume_width 0.15 m (the law at every fluid particle, one thread).
 // - DamBreak_BandRate, CaseI_BandRate: the defaults with density_rate = "randles1996" (one
 //   thread, DL 5 and 2 mm): what the band's correction (rate and gradient) costs.
-// - DamBreak_Collision, CaseI_Collision, DamBreakSurge_Collision: the defaults with
-//   particle_collision = "jandaghian2021" (one thread): what its pass over the fluid's lists costs.
+// - DamBreak_NoCollision, CaseI_NoCollision, DamBreakSurge_NoCollision: the defaults with
+//   particle_collision = "none", the defaults before 2026-12-08 (session 15), one thread: what the
+//   default "jandaghian2021" (its pass over the fluid's lists) costs.
 //
 // - NeighbourBuild/DL_um/threads: binning and building the neighbour lists of case I's particles
 //   (what Simulation does when the skin is used up), with the case's cutoff re + skin. The fluid
@@ -79,7 +80,7 @@ enum class Scheme {
   WallFriction,
   SideWalls,
   BandRate,
-  Collision
+  NoCollision
 };
 
 std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
@@ -95,8 +96,7 @@ std::unique_ptr<Simulation> make(const std::string& case_dir, double dl,
     spec.gradient_renormalisation = GradientRenormalisation::Deviatoric;
   }
   if (scheme == Scheme::Plain) spec.gradient_renormalisation = GradientRenormalisation::None;
-  if (scheme == Scheme::Collision)
-    spec.particle_collision = ParticleCollisionScheme::Jandaghian2021;
+  if (scheme == Scheme::NoCollision) spec.particle_collision = ParticleCollisionScheme::None;
   if (scheme == Scheme::FreeSlip || scheme == Scheme::WallFriction) {
     spec.artificial_viscosity_walls = ArtificialViscosityWalls::FreeSlip;
   }
@@ -187,14 +187,14 @@ void CaseI_Plain(benchmark::State& state) {
 void DamBreakSurge_Plain(benchmark::State& state) {
   step(state, "dambreak", Scheme::Plain, kSurge);
 }
-void DamBreak_Collision(benchmark::State& state) {
-  step(state, "dambreak", Scheme::Collision);
+void DamBreak_NoCollision(benchmark::State& state) {
+  step(state, "dambreak", Scheme::NoCollision);
 }
-void CaseI_Collision(benchmark::State& state) {
-  step(state, "caseI", Scheme::Collision);
+void CaseI_NoCollision(benchmark::State& state) {
+  step(state, "caseI", Scheme::NoCollision);
 }
-void DamBreakSurge_Collision(benchmark::State& state) {
-  step(state, "dambreak", Scheme::Collision, kSurge);
+void DamBreakSurge_NoCollision(benchmark::State& state) {
+  step(state, "dambreak", Scheme::NoCollision, kSurge);
 }
 void DamBreak_FreeSlip(benchmark::State& state) {
   step(state, "dambreak", Scheme::FreeSlip);
@@ -325,17 +325,17 @@ BENCHMARK(DamBreakSurge_Plain)
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(DamBreak_Collision)
+BENCHMARK(DamBreak_NoCollision)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(CaseI_Collision)
+BENCHMARK(CaseI_NoCollision)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000, 2000}, {1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK(DamBreakSurge_Collision)
+BENCHMARK(DamBreakSurge_NoCollision)
     ->ArgNames({"DL_um", "threads"})
     ->ArgsProduct({{5000}, {1}})
     ->Unit(benchmark::kMillisecond)

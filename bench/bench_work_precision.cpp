@@ -3,11 +3,13 @@
 // case's Courant number or courant:C with another) and
 // the pressure-gradient schemes the solver offers, and the stabilisation of docs/method.md (the
 // defaults) against the scheme of commit 3a85288 and against the defaults before 2026-12-07,
-// session 13 ("plain": the gradient not renormalised) (docs/performance.md).
+// session 13 ("plain": the gradient not renormalised) and before 2026-12-08, session 15
+// ("nocollision": no particle collision) (docs/performance.md).
 //
 //   build/bin/bench_work_precision --study dambreak [--dl 0.01,0.007,0.005,0.0035]
 //       [--steps courant,fixed,courant:0.8] [--gradients all]
-//       [--stabilisation default,plain,3a85288] [--repeats 3] [--threads 2] [--out FILE.csv]
+//       [--stabilisation default,plain,nocollision,3a85288] [--repeats 3] [--threads 2]
+//       [--out FILE.csv]
 //   build/bin/bench_work_precision --study hydrostatic ...
 //   build/bin/bench_work_precision --study caseI [--dl 0.01,0.007,0.005] [--reference-dl 0.0025]
 //       [--reference FILE.csv] [--reference-stabilisation default|3a85288] [--section A]
@@ -354,7 +356,8 @@ int usage(const char* msg) {
   std::fprintf(stderr,
                "bench_work_precision: %s\nusage: bench_work_precision --study "
                "dambreak|hydrostatic|caseI [--dl D1,D2,...] [--steps courant,fixed,courant:C] "
-               "[--gradients all|NAME,...] [--stabilisation default,plain,3a85288] [--repeats N] "
+               "[--gradients all|NAME,...] [--stabilisation default,plain,nocollision,3a85288] "
+               "[--repeats N] "
                "[--threads N] [--out FILE.csv]\n"
                "  caseI only: [--reference-dl D] [--reference FILE.csv] "
                "[--reference-stabilisation default|3a85288] [--section NAME] "
@@ -440,8 +443,9 @@ int main(int argc, char** argv) {
     }
   }
   for (const auto& st : split(stabilisations)) {
-    if (st != "default" && st != "plain" && st != "3a85288") {
-      return usage(("unknown stabilisation " + st + " (default, plain or 3a85288)").c_str());
+    if (st != "default" && st != "plain" && st != "nocollision" && st != "3a85288") {
+      return usage(
+          ("unknown stabilisation " + st + " (default, plain, nocollision or 3a85288)").c_str());
     }
   }
   // Case I is costly: by default only the gradient its case file names.
@@ -505,6 +509,9 @@ int main(int argc, char** argv) {
             if (stabilisation == "3a85288") use_scheme_3a85288(spec);
             if (stabilisation == "plain") {
               spec.gradient_renormalisation = GradientRenormalisation::None;
+            }
+            if (stabilisation == "nocollision") {
+              spec.particle_collision = ParticleCollisionScheme::None;
             }
             spec.dl = std::stod(d);
             if (!case_i_study) spec.settle_time = 0.0;

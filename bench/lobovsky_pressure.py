@@ -79,8 +79,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 # bench/, beside the script
-from physics_options import (FREE_SLIP, PARTICLE_COLLISION, PLAIN, SIDE_WALLS_LOBOVSKY, STRAIN,
-                             WALL_FRICTION)
+from physics_options import (FREE_SLIP, NO_COLLISION, OLD, PARTICLE_COLLISION, PLAIN,
+                             SIDE_WALLS_LOBOVSKY, STRAIN, WALL_FRICTION)
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "lobovsky" / "case.toml"
@@ -115,9 +115,6 @@ EXPERIMENT_LEVELS = {
            "points": ([2.154, 2.231, 2.5, 3.0, 3.65, 4.5, 5.5, 6.0, 6.116, 6.4, 7.167],
                       [0.016, 0.05, 0.113, 0.131, 0.136, 0.181, 0.237, 0.359, 0.5, 0.741, 0.811])},
 }
-OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"',
-       "wall_density": '"n0"', "gradient_renormalisation": '"none"'}
 SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
            ("surface_pressure_cap false", {"surface_pressure_cap": "false"}),
            ("gradient_renormalisation khayyer2011",
@@ -164,7 +161,9 @@ SCHEMES = [("new default", {}), ("3a85288 scheme", OLD),
             {**PARTICLE_COLLISION, "particle_collision_distance": "0.8",
              "particle_collision_restitution": "1.0"}),
            ("particle_collision jandaghian2021, p_min 0",
-            {**PARTICLE_COLLISION, "particle_collision_min_pressure": "0.0"})]
+            {**PARTICLE_COLLISION, "particle_collision_min_pressure": "0.0"}),
+           # 25: the defaults before 2026-12-08, session 15 (row 24 is the default since)
+           ("defaults before session 15 (particle_collision none)", NO_COLLISION)]
 
 
 def case_text(physics, dl, wall_height=0.6):

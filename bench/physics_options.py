@@ -10,5 +10,14 @@ FREE_SLIP = {"artificial_viscosity_walls": '"free-slip"'}
 WALL_FRICTION = {"wall_friction": '"spalding1961"'}
 # The flume's side walls of Lobovsky et al.'s tank, 150 mm apart (1610 x 150 x 600 mm).
 SIDE_WALLS_LOBOVSKY = {"side_wall_friction": '"spalding1961"', "flume_width": "0.15"}
-# The dynamic particle collision between fluid particles (Jandaghian et al. 2021).
+# The dynamic particle collision between fluid particles (Jandaghian et al. 2021), the default
+# from 2026-12-08 (session 15) with particle_collision_min_pressure = 0: the rows measured before
+# then with "the defaults" read NO_COLLISION added (each script's row "defaults before session
+# 15"); PARTICLE_COLLISION rows name the values they were measured with.
 PARTICLE_COLLISION = {"particle_collision": '"jandaghian2021"'}
+NO_COLLISION = {"particle_collision": '"none"'}
+# The scheme of commit 3a85288's [physics] (CaseSpec.h's use_scheme_3a85288; its fluid's wall
+# clearance is a [particles] key, which these rows leave at the default).
+OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
+       "free_surface": '"koshizuka1996"', "shifting": '"none"',
+       "wall_density": '"n0"', "gradient_renormalisation": '"none"', **NO_COLLISION}

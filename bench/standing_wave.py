@@ -41,13 +41,11 @@ from pathlib import Path
 
 import numpy as np
 
-from physics_options import FREE_SLIP, PARTICLE_COLLISION, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside
+from physics_options import (FREE_SLIP, NO_COLLISION, OLD, PARTICLE_COLLISION, PLAIN,  # bench/
+                             STRAIN, WALL_FRICTION)
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "standing-wave" / "case.toml"
-OLD = {"negative_pressure": '"zero"', "number_density": '"summation"',
-       "free_surface": '"koshizuka1996"', "shifting": '"none"',
-       "wall_density": '"n0"', "gradient_renormalisation": '"none"'}
 # Rows 0-3 are the table of docs/validation.md; the rest take the default scheme apart, one
 # change each ("time.KEY" goes to [time]).
 SCHEMES = [
@@ -166,6 +164,8 @@ SCHEMES = [
     # 58: l0 0.8 DL with no least repulsion (p_min 0: surface pairs, at p = 0, only collide)
     ("new, particle collision jandaghian2021, p_min 0",
      {**PARTICLE_COLLISION, "particle_collision_min_pressure": "0.0"}),
+    # 59: the defaults before 2026-12-08, session 15 (row 58 is the default since)
+    ("defaults before session 15 (particle_collision none)", NO_COLLISION),
 ]
 L, H = 1.0, 0.5
 G = 9.81

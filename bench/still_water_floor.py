@@ -30,7 +30,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
-from physics_options import FREE_SLIP, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside the script
+from physics_options import FREE_SLIP, NO_COLLISION, PLAIN, STRAIN, WALL_FRICTION  # bench/, beside the script
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "hydrostatic" / "case.toml"
@@ -52,6 +52,7 @@ VARIANTS = [
     ("khayyer2011-strain, artificial_viscosity_walls free-slip, wall_friction spalding1961",
      {**STRAIN, **FREE_SLIP, **WALL_FRICTION}),
     ("defaults before session 13 (gradient_renormalisation none)", PLAIN),
+    ("defaults before session 15 (particle_collision none)", NO_COLLISION),
 ]
 
 

@@ -14,33 +14,34 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASE = os.path.join(HERE, '..', 'cases', 'hydrostatic', 'case.toml')
 
+from physics_options import NO_COLLISION, OLD  # bench/, beside the script; OLD: 3a85288
+
 # (label, extra [physics] keys, [particles] initial_state)
-NO_COLLISION = {'wall_collision': '"none"'}
-# The cures of docs/method.md ("A stabilised step") off: the scheme of commit 3a85288.
-OLD = {'negative_pressure': '"zero"', 'number_density': '"summation"',
-       'free_surface': '"koshizuka1996"', 'shifting': '"none"',
-       'wall_density': '"n0"', 'gradient_renormalisation': '"none"'}
+NO_WALL_COLLISION = {'wall_collision': '"none"'}
 VARIANTS = [
     ('study: Eq. 2.19, EOS walls, lattice start, alpha = 0',
      {'pressure_gradient': '"koshizuka1998-min"', 'wall_pressure': '"eos"',
-      'artificial_viscosity': '0.0', **NO_COLLISION, **OLD}, 'lattice'),
+      'artificial_viscosity': '0.0', **NO_WALL_COLLISION, **OLD}, 'lattice'),
     ('+ walls extrapolated from the fluid',
      {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
-      **NO_COLLISION, **OLD}, 'lattice'),
+      **NO_WALL_COLLISION, **OLD}, 'lattice'),
     ('+ hydrostatic start',
      {'pressure_gradient': '"koshizuka1998-min"', 'artificial_viscosity': '0.0',
-      **NO_COLLISION, **OLD}, 'hydrostatic'),
+      **NO_WALL_COLLISION, **OLD}, 'hydrostatic'),
     ('+ artificial viscosity 0.02',
-     {'pressure_gradient': '"koshizuka1998-min"', **NO_COLLISION, **OLD}, 'hydrostatic'),
-    ('+ variational gradient', dict(NO_COLLISION, **OLD), 'hydrostatic'),
+     {'pressure_gradient': '"koshizuka1998-min"', **NO_WALL_COLLISION, **OLD}, 'hydrostatic'),
+    ('+ variational gradient', dict(NO_WALL_COLLISION, **OLD), 'hydrostatic'),
     ('+ wall collisions (the defaults of 3a85288)', dict(OLD), 'hydrostatic'),
     ('+ continuity number density with diffusion',
      dict(OLD, number_density='"continuity"'), 'hydrostatic'),
     ('+ free surface by scan (Marrone 2010)',
      dict(OLD, number_density='"continuity"', free_surface='"marrone2010"'), 'hydrostatic'),
     ('+ negative pressure, tensile switch',
-     {'shifting': '"none"'}, 'hydrostatic'),
-    ('+ particle shifting (the defaults)', {}, 'hydrostatic'),
+     {'shifting': '"none"', **NO_COLLISION}, 'hydrostatic'),
+    ('+ particle shifting (the defaults before 2026-12-08)', dict(NO_COLLISION), 'hydrostatic'),
+    ('defaults before 2026-12-08 without artificial viscosity',
+     {'artificial_viscosity': '0.0', **NO_COLLISION}, 'hydrostatic'),
+    ('+ particle collision (the defaults)', {}, 'hydrostatic'),
     ('defaults without artificial viscosity', {'artificial_viscosity': '0.0'}, 'hydrostatic'),
 ]
 

@@ -263,6 +263,11 @@ void print_scene(std::ostream& out, const CaseSpec& spec, const Scene& scene) {
     line("density rate        %s in the surface band",
          std::string(scheme_key(kDensityRateSchemes, spec.density_rate)).c_str());
   }
+  if (spec.particle_collision != ParticleCollisionScheme::None) {
+    line("particle collision  %s: fluid pairs closer than %g DL",
+         std::string(scheme_key(kParticleCollisionSchemes, spec.particle_collision)).c_str(),
+         spec.particle_collision_distance);
+  }
   line("domain              (%g, %g) ... (%g, %g) m", lo.x, lo.y, hi.x, hi.y);
 }
 

@@ -31,10 +31,12 @@
 /// and opposite: momentum is kept. Particles at rest sit DL apart, beyond l0, so still water is
 /// untouched.
 ///
-/// Our values (the paper gives the form; its examples, their own): lambda = 0.05; p_min =
-/// rho0 |g| DL, the weight of one layer of particles, so that at the free surface, where p = 0,
-/// a pair at l0/2 is still parted (at 2.5 g for l0 = 0.8 DL: p_min / (rho0 l0/2)); p_max the
-/// hydrostatic pressure at the foot of the water. l0 = 0.8 DL ([physics]
+/// Our values (the paper gives the form; its examples, their own): lambda = 0.05; p_min = 0
+/// ([physics] particle_collision_min_pressure), so that a pair at the free surface, where p = 0,
+/// is only collided, never parted (rho0 |g| DL, the weight of one layer of particles, parted
+/// them too and made still water move half as much again: docs/validation.md, "The particle
+/// collision as the default"); p_max the hydrostatic pressure at the foot of the water. The
+/// default since 2026-12-08, session 15. l0 = 0.8 DL ([physics]
 /// particle_collision_distance, the wall collision's distance): a wave strains the water's
 /// arrangement by a few per cent, and with l0 = DL the collision part took a share chi of those
 /// pairs' approach every step (the standing wave lost 9.3 % of its amplitude per period against

@@ -635,8 +635,10 @@ CaseSpec parse_case_text(std::string_view text, const std::string& path) {
     if (const auto e = collision_constant("particle_collision_restitution", 0.0, 1.0, false)) {
       c.particle_collision_restitution = *e;
     }
-    c.particle_collision_min_pressure =
-        collision_constant("particle_collision_min_pressure", 0.0, kInf, false);
+    if (const auto p_min =
+            collision_constant("particle_collision_min_pressure", 0.0, kInf, false)) {
+      c.particle_collision_min_pressure = *p_min;
+    }
     c.negative_pressure = pick(kNegativePressureSchemes, "negative_pressure", c.negative_pressure);
     c.pressure_floor = r.number("pressure_floor", c.pressure_floor, -kInf, 0.0);
     c.wall_density = pick(kWallDensitySchemes, "wall_density", c.wall_density);

@@ -139,13 +139,13 @@ Simulation::Simulation(const CaseSpec& spec, Scene scene)
   if (spec.particle_collision == ParticleCollisionScheme::Jandaghian2021) {
     // p_max: the hydrostatic pressure at the foot of the water
     // (ParticleCollision_Jandaghian2021.h).
-    particle_collision_ = ParticleCollision_Jandaghian2021{
-        spec.particle_collision_distance * spec.dl,
-        spec.particle_collision_lambda,
-        spec.particle_collision_min_pressure.value_or(spec.density * norm(spec.gravity) * spec.dl),
-        spec.density * norm(spec.gravity) * scene_.fluid_height,
-        spec.density,
-        spec.particle_collision_restitution};
+    particle_collision_ =
+        ParticleCollision_Jandaghian2021{spec.particle_collision_distance * spec.dl,
+                                         spec.particle_collision_lambda,
+                                         spec.particle_collision_min_pressure,
+                                         spec.density * norm(spec.gravity) * scene_.fluid_height,
+                                         spec.density,
+                                         spec.particle_collision_restitution};
     collision_du_.resize(ps.size());
     collision_dv_.resize(ps.size());
   }

@@ -221,9 +221,9 @@ class Simulation {
   // with the velocity changes of the step's pass.
   std::optional<ParticleCollision_Jandaghian2021> particle_collision_;
   std::vector<double> collision_du_, collision_dv_;
-  // Its candidates, found at each list build: fluid particle i's fluid neighbours within
-  // l0 + skin then, close_ids_[close_begin_[i - fluid_begin] ... close_begin_[i - fluid_begin + 1]).
-  // No pair closer than l0 at r* is missing while no particle has moved skin/2 (the lists' rule).
+  // Its candidates, found at each list build: fluid particle i's fluid neighbours within l0 +
+  // skin then, close_ids_ from close_begin_[k] to close_begin_[k + 1] (k = i - fluid_begin). No
+  // pair closer than l0 at r* is missing while no particle has moved skin/2 (the lists' rule).
   std::vector<std::int64_t> close_begin_;
   std::vector<std::int32_t> close_ids_;
   TimeStepRule rule_, settle_rule_;

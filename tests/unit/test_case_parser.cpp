@@ -62,6 +62,8 @@ TEST(CaseParser, MinimalCaseGetsTheDocumentedDefaults) {
   EXPECT_EQ(c.artificial_viscosity_walls, ArtificialViscosityWalls::NoSlip);
   EXPECT_EQ(c.gradient_renormalisation, GradientRenormalisation::Strain);
   EXPECT_EQ(c.density_rate, DensityRateScheme::Randles1996);
+  EXPECT_EQ(c.particle_collision, ParticleCollisionScheme::Jandaghian2021);
+  EXPECT_DOUBLE_EQ(c.particle_collision_min_pressure, 0.0);
   EXPECT_EQ(c.output_fields.size(), std::size(kFields));
   EXPECT_EQ(c.output_kinds.size(), 3u);
   ASSERT_EQ(c.walls.size(), 1u);
@@ -199,12 +201,12 @@ TEST(CaseParser, InconsistentValuesAreNamed) {
                    "\n[physics]\ngradient_renormalisation = \"khayyer2011-strain\"\n"
                    "strain_memory = 0.0\n",
                19, "strain_memory: value 0 is out of range (0, inf)");
-  expect_error(test::minimal_case_text() + "\n[physics]\nparticle_collision_distance = 0.8\n", 18,
-               "is a constant of particle_collision = \"jandaghian2021\" only");
-  expect_error(test::minimal_case_text() +
-                   "\n[physics]\nparticle_collision = \"jandaghian2021\"\n"
-                   "particle_collision_distance = 0.4\n",
-               19, "particle_collision_distance: value 0.4 is out of range (0.5, 1]");
+  expect_error(
+      test::minimal_case_text() +
+          "\n[physics]\nparticle_collision = \"none\"\nparticle_collision_distance = 0.8\n",
+      19, "is a constant of particle_collision = \"jandaghian2021\" only");
+  expect_error(test::minimal_case_text() + "\n[physics]\nparticle_collision_distance = 0.4\n", 18,
+               "particle_collision_distance: value 0.4 is out of range (0.5, 1]");
   expect_error(test::minimal_case_text() +
                    "\n[physics]\nkinematic_viscosity = 0.0\nwall_friction = \"spalding1961\"\n",
                19, "give kinematic_viscosity > 0");
