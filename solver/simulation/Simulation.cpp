@@ -967,6 +967,9 @@ void Simulation::find_close_fluid_pairs() {
   for (std::size_t k = 1; k < close_begin_.size(); ++k) close_begin_[k] += close_begin_[k - 1];
   close_ids_.resize(static_cast<std::size_t>(close_begin_.back()));
   parallel_for(fluid, n, [&](std::int64_t i) {
+    // Those with none (40 to 70 % in case I's frames; the count's pass, which the compiler
+    // vectorises, told) are not walked again.
+    if (close_begin_[i - fluid + 1] == close_begin_[i - fluid]) return;
     std::int32_t* out = close_ids_.data() + close_begin_[i - fluid];
     for (const std::int32_t j : neighbours_.of(i)) {
       if (close(i, j)) *out++ = j;
