@@ -948,7 +948,7 @@ void Simulation::correct(double dt) {
 void Simulation::find_close_fluid_pairs() {
   if (!particle_collision_) return;
   // From the full lists, at the build positions: a pair farther than l0 + skin apart then is
-  // farther than l0 at r* (each particle has moved less than skin/2). About one build in ten
+  // farther than l0 at r* (each particle has moved less than skin/2). Case I builds once in 11
   // steps, so the collision's pass walks a few candidates a step instead of the whole list.
   const ParticleSet& ps = scene_.particles;
   const std::int64_t fluid = ps.fluid_begin(), n = ps.size();
