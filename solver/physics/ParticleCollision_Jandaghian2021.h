@@ -76,20 +76,13 @@ struct ParticleCollision_Jandaghian2021 {
   }
 
   /// The change of fluid particle i's velocity from its fluid neighbours closer than l0
-  /// (indices >= fluid), from the positions, velocities and pressures of the step.
+  /// (indices >= fluid), from the positions, velocities and pressures of the step. `nb` may be
+  /// any list that holds them: Simulation passes the few candidates of the last list build.
   Vec2 change(std::int64_t i, IdRange nb, const double* x, const double* y, const double* u,
               const double* v, const double* p, std::int64_t fluid, double dt) const {
     const double l2 = distance * distance;
-    Vec2 du;
-    // Most particles have no fluid neighbour closer than l0 (on the lattice none has): a count
-    // over the list without branches, which the compiler vectorises, spares them the loop below.
-    int close = 0;
-    for (const std::int32_t j : nb) {
-      const double rx = x[i] - x[j], ry = y[i] - y[j];
-      close += (rx * rx + ry * ry < l2) & (j >= fluid) & (j != i);
-    }
-    if (close == 0) return du;
     const double w_half = wendland(0.5);
+    Vec2 du;
     for (const std::int32_t j : nb) {
       if (j < fluid || j == i) continue;
       const double rx = x[i] - x[j], ry = y[i] - y[j];
